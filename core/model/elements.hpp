@@ -1,0 +1,38 @@
+#pragma once
+// Element buffers derived from the map. Each element remembers one dart of the
+// cell it belongs to, so a swap-remove can re-point that cell in O(1).
+#include <vector>
+
+#include "model/types.hpp"
+
+namespace tendril {
+
+// Elastic bar / cable on an edge (eq. 3.32-3.35).
+struct Bar {
+  ParticleId i, j;
+  double rest_length;
+  double EA;
+  double prestress;
+  double line_mass;  // kg/m
+  std::uint8_t tension_only;
+  std::uint32_t dart;  // a dart of the edge
+};
+
+// Spline-beam hinge with 3 DOF per particle at a beam vertex j between the
+// links i-j and j-k (eq. 3.41-3.43). rest_curvature is 0 for a straight beam.
+struct Hinge {
+  ParticleId i, j, k;
+  double EI;
+  double rest_curvature;
+  std::uint32_t dart;  // a dart of the vertex j inside the beam
+};
+
+template <class E>
+struct ElementBuffer {
+  std::vector<E> items;
+  std::size_t size() const { return items.size(); }
+  E& operator[](std::size_t n) { return items[n]; }
+  const E& operator[](std::size_t n) const { return items[n]; }
+};
+
+}  // namespace tendril

@@ -1,0 +1,330 @@
+// Model bookkeeping: blocks, darts, embeddings and element buffers. The rules
+// themselves live in operations.cpp; the invariant check in model_check.cpp.
+#include "model/model.hpp"
+
+#include <algorithm>
+
+namespace tendril {
+
+Model::Model()
+    : dart_particle(map.add_column<ParticleId>(kNone)),
+      dart_block(map.add_column<BlockId>(kNone)),
+      dart_bar(map.add_column<ElementIndex>(kNone)),
+      dart_hinge(map.add_column<ElementIndex>(kNone)),
+      ring_next(map.add_column<Dart>(kNoDart)),
+      ring_prev(map.add_column<Dart>(kNoDart)),
+      rest_length(map.add_column<double>(0.0)) {}
+
+void Model::require_particle(ParticleId p, const char* what) const {
+  if (!particles.valid(p))
+    throw ModelError(std::string(what) + ": particle " + std::to_string(p) + " does not exist (deleted?)");
+}
+
+void Model::require_block(BlockId b, const char* what) const {
+  if (!block_valid(b))
+    throw ModelError(std::string(what) + ": block " + std::to_string(b) + " does not exist (deleted?)");
+}
+
+BlockId Model::new_block(BlockKind k, const Section& s, bool closed) {
+  BlockId b;
+  if (!free_blocks_.empty()) {
+    b = free_blocks_.back();
+    free_blocks_.pop_back();
+  } else {
+    b = static_cast<BlockId>(blocks.size());
+    blocks.emplace_back();
+  }
+  Block& blk = blocks[b];
+  blk.kind = k;
+  blk.closed = closed;
+  blk.section = s;
+  blk.dart = kNoDart;
+  blk.darts = 0;
+  blk.alive = true;
+  ++live_blocks_;
+  return b;
+}
+
+void Model::free_block(BlockId b) {
+  blocks[b].alive = false;
+  blocks[b].dart = kNoDart;
+  ++blocks[b].generation;
+  free_blocks_.push_back(b);
+  --live_blocks_;
+}
+
+Dart Model::new_dart(BlockId b, ParticleId p) {
+  Dart d = map.create_dart();
+  dart_block[d] = b;
+  embed(d, p);
+  if (blocks[b].dart == kNoDart) blocks[b].dart = d;
+  ++blocks[b].darts;
+  return d;
+}
+
+void Model::free_dart(Dart d) {
+  for (int i = 0; i < 3; ++i) map.unlink(i, d);
+  BlockId b = dart_block[d];
+  unembed(d);
+  --blocks[b].darts;
+  if (blocks[b].dart == d) blocks[b].dart = kNoDart;
+  map.delete_dart(d);
+}
+
+void Model::embed(Dart d, ParticleId p) {
+  dart_particle[d] = p;
+  Dart head = particles.first_dart[p];
+  if (head == kNone) {
+    particles.first_dart[p] = d;
+    ring_next[d] = ring_prev[d] = d;
+  } else {
+    Dart last = ring_prev[head];
+    ring_next[last] = d;
+    ring_prev[d] = last;
+    ring_next[d] = head;
+    ring_prev[head] = d;
+  }
+  ++particles.degree[p];
+  particles.refresh_active(p);
+}
+
+void Model::unembed(Dart d) {
+  ParticleId p = dart_particle[d];
+  Dart n = ring_next[d], pr = ring_prev[d];
+  if (n == d) {
+    particles.first_dart[p] = kNone;
+  } else {
+    ring_next[pr] = n;
+    ring_prev[n] = pr;
+    if (particles.first_dart[p] == d) particles.first_dart[p] = n;
+  }
+  ring_next[d] = ring_prev[d] = kNoDart;
+  dart_particle[d] = kNone;
+  --particles.degree[p];
+  particles.refresh_active(p);
+}
+
+std::vector<Dart> Model::darts_of(ParticleId p) const {
+  std::vector<Dart> out;
+  Dart head = particles.first_dart[p];
+  if (head == kNone) return out;
+  Dart d = head;
+  do {
+    out.push_back(d);
+    d = ring_next[d];
+  } while (d != head);
+  return out;
+}
+
+// --- bars --------------------------------------------------------------------
+
+void Model::set_edge_rest_length(Dart d, double length) {
+  map.for_orbit(kEdgeOrbit, d, [&](Dart x) {
+    rest_length[x] = length;
+    return true;
+  });
+}
+
+void Model::add_bar(Dart d) {
+  const Block& blk = blocks[dart_block[d]];
+  ElementIndex e = static_cast<ElementIndex>(bars.size());
+  Bar bar{};
+  bar.rest_length = rest_length[d];
+  bar.EA = blk.section.EA;
+  bar.prestress = blk.section.prestress;
+  bar.line_mass = blk.section.line_mass;
+  bar.tension_only = blk.kind == BlockKind::Cable;
+  bar.dart = d;
+  bars.items.push_back(bar);
+  map.for_orbit(kEdgeOrbit, d, [&](Dart x) {
+    dart_bar[x] = e;
+    return true;
+  });
+  bind_bar(e);
+}
+
+void Model::bind_bar(ElementIndex e) {
+  Bar& bar = bars[e];
+  bar.i = dart_particle[bar.dart];
+  bar.j = dart_particle[map.alpha(0, bar.dart)];
+  double half = 0.5 * bar.line_mass * bar.rest_length;
+  particles.lumped_mass[bar.i] += half;
+  particles.lumped_mass[bar.j] += half;
+}
+
+void Model::unbind_bar(ElementIndex e) {
+  const Bar& bar = bars[e];
+  double half = 0.5 * bar.line_mass * bar.rest_length;
+  particles.lumped_mass[bar.i] -= half;
+  particles.lumped_mass[bar.j] -= half;
+}
+
+void Model::remove_bar(Dart d) {
+  ElementIndex e = dart_bar[d];
+  if (e == kNone) return;
+  unbind_bar(e);
+  map.for_orbit(kEdgeOrbit, bars[e].dart, [&](Dart x) {
+    dart_bar[x] = kNone;
+    return true;
+  });
+  ElementIndex last = static_cast<ElementIndex>(bars.size() - 1);
+  if (e != last) {
+    bars[e] = bars[last];
+    map.for_orbit(kEdgeOrbit, bars[e].dart, [&](Dart x) {
+      dart_bar[x] = e;
+      return true;
+    });
+  }
+  bars.items.pop_back();
+}
+
+// --- hinges ------------------------------------------------------------------
+
+void Model::add_hinge(Dart d) {
+  Dart e = map.alpha(1, d);
+  ElementIndex h = static_cast<ElementIndex>(hinges.size());
+  Hinge hinge{};
+  hinge.EI = blocks[dart_block[d]].section.EI;
+  hinge.rest_curvature = 0;
+  hinge.dart = d;
+  hinges.items.push_back(hinge);
+  dart_hinge[d] = dart_hinge[e] = h;
+  refresh_hinge(d);
+}
+
+void Model::remove_hinge(Dart d) {
+  ElementIndex h = dart_hinge[d];
+  if (h == kNone) return;
+  Dart hd = hinges[h].dart;
+  dart_hinge[hd] = dart_hinge[map.alpha(1, hd)] = kNone;
+  ElementIndex last = static_cast<ElementIndex>(hinges.size() - 1);
+  if (h != last) {
+    hinges[h] = hinges[last];
+    Dart md = hinges[h].dart;
+    dart_hinge[md] = dart_hinge[map.alpha(1, md)] = h;
+  }
+  hinges.items.pop_back();
+}
+
+void Model::refresh_hinge(Dart d) {
+  ElementIndex h = dart_hinge[d];
+  if (h == kNone) return;
+  Hinge& hinge = hinges[h];
+  Dart hd = hinge.dart;
+  hinge.i = dart_particle[map.alpha(0, hd)];
+  hinge.j = dart_particle[hd];
+  hinge.k = dart_particle[map.alpha(0, map.alpha(1, hd))];
+}
+
+void Model::refresh_vertex(Dart d) {
+  ElementIndex e = dart_bar[d];
+  if (e != kNone) {
+    unbind_bar(e);
+    bind_bar(e);
+  }
+  refresh_hinge(d);
+  refresh_hinge(map.alpha(0, d));
+}
+
+// --- full rebuild ------------------------------------------------------------
+
+void Model::rebuild_elements() {
+  bars.items.clear();
+  hinges.items.clear();
+  std::fill(particles.lumped_mass.begin(), particles.lumped_mass.end(), 0.0);
+  const std::size_t n = map.capacity();
+  for (Dart d = 0; d < n; ++d) {
+    dart_bar[d] = kNone;
+    dart_hinge[d] = kNone;
+  }
+  for (Dart d = 0; d < n; ++d) {
+    if (!map.alive(d)) continue;
+    if (dart_bar[d] == kNone && !map.is_free(0, d)) add_bar(d);
+    if (blocks[dart_block[d]].kind == BlockKind::Beam && dart_hinge[d] == kNone && !map.is_free(1, d))
+      add_hinge(d);
+  }
+}
+
+// --- constraints and queries -------------------------------------------------
+
+void Model::set_lock(ParticleId p, std::uint8_t bits) {
+  require_particle(p, "lock");
+  particles.lock[p] = bits;
+}
+
+void Model::set_passive(ParticleId p, bool passive) {
+  require_particle(p, "set_passive");
+  particles.passive[p] = passive;
+  particles.refresh_active(p);
+}
+
+void Model::set_load(ParticleId p, const Vec3& f) {
+  require_particle(p, "load");
+  particles.load[p] = f;
+}
+
+void Model::set_point_mass(ParticleId p, double kg) {
+  require_particle(p, "mass");
+  if (!(kg >= 0)) throw ModelError("mass: must be a non-negative number of kg");
+  particles.point_mass[p] = kg;
+}
+
+std::vector<BlockId> Model::blocks_of(ParticleId p) const {
+  std::vector<BlockId> out;
+  for (Dart d : darts_of(p)) out.push_back(dart_block[d]);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+State Model::state(ParticleId p) const {
+  require_particle(p, "state");
+  if (particles.degree[p] == 0) return State::Isolated;
+  if (particles.passive[p]) return State::Passive;
+  if (particles.lock[p] & kLockRotation) return State::FullLock;
+  if (particles.lock[p] & kLockTranslation) return State::Lock;
+  return blocks_of(p).size() > 1 ? State::Shared : State::Simple;
+}
+
+std::vector<ParticleId> Model::particles_of(BlockId b) const {
+  require_block(b, "particles");
+  const Block& blk = blocks[b];
+  std::vector<ParticleId> out;
+  if (blk.kind == BlockKind::Patch) {
+    std::vector<Dart> darts = map.orbit(kComponentOrbit, blk.dart);
+    std::sort(darts.begin(), darts.end());
+    for (Dart d : darts) out.push_back(dart_particle[d]);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+  // A path or ring: walk edge by edge from the block's start dart.
+  Dart d = blk.dart;
+  while (true) {
+    out.push_back(dart_particle[d]);
+    Dart e = map.alpha(0, d);
+    Dart next = map.alpha(1, e);
+    if (next == e) {
+      out.push_back(dart_particle[e]);
+      break;
+    }
+    if (next == blk.dart) break;
+    d = next;
+  }
+  return out;
+}
+
+std::size_t Model::block_count(BlockKind k) const {
+  std::size_t n = 0;
+  for (const Block& b : blocks) n += b.alive && b.kind == k;
+  return n;
+}
+
+std::vector<BlockId> Model::live_blocks() const {
+  std::vector<BlockId> out;
+  for (BlockId b = 0; b < blocks.size(); ++b)
+    if (blocks[b].alive) out.push_back(b);
+  return out;
+}
+
+}  // namespace tendril

@@ -1,0 +1,127 @@
+#pragma once
+// The model: a generalized map whose 0-embedding is the particle buffer, the
+// building blocks (connected components), and element buffers derived from
+// both. Every primitive operation of thesis 4.2.7 patches only the darts,
+// particles and elements it touches; rebuild_elements() recomputes all of
+// them from the map and exists to check that claim (and to measure it).
+#include <string>
+#include <vector>
+
+#include "model/elements.hpp"
+#include "model/particles.hpp"
+#include "model/types.hpp"
+#include "topology/gmap.hpp"
+
+namespace tendril {
+
+struct Block {
+  BlockKind kind = BlockKind::Cable;
+  bool closed = false;  // a beam ring
+  Section section;
+  Dart dart = kNoDart;  // any dart of the component
+  std::size_t darts = 0;
+  bool alive = false;
+  std::uint32_t generation = 0;
+};
+
+class Model {
+ public:
+  Model();
+
+  // --- particles (rules 1-5) -------------------------------------------
+  ParticleId add_particle(const Vec3& x);                    // rule 1
+  void delete_particle(ParticleId p);                        // rule 2
+  ParticleId merge(const std::vector<ParticleId>& ps);       // rule 3
+  std::vector<ParticleId> explode(ParticleId p);             // rule 4
+  ParticleId explode_from(ParticleId p, BlockId b);          // rule 5
+
+  // --- cables (rules 6-7) ----------------------------------------------
+  // Rule 6. A rest length <= 0 takes the current distance.
+  BlockId add_cable(ParticleId a, ParticleId b, const Section& s, double rest_length = 0);
+  void delete_cable(BlockId b);                                       // rule 7
+
+  // --- beams (rules 8-18) ----------------------------------------------
+  // Rule 8: a spline beam through existing particles (open path or ring).
+  BlockId add_beam(const std::vector<ParticleId>& ps, const Section& s, bool closed = false);
+  // Rule 10: from a particle along `span` (its full length) with n segments.
+  BlockId add_beam_from(ParticleId start, const Vec3& span, int segments, const Section& s);
+  ParticleId insert_particle(ParticleId a, ParticleId b);  // rule 13
+  void remove_from_beam(ParticleId p);                     // rule 11
+  void delete_beam(BlockId b);                              // rule 18
+
+  // --- patches: a quad grid built by hand until meshing lands -------------
+  // grid[r * cols + c] are existing particles; quads are sewn by alpha2 and
+  // every edge carries a bar with the given section.
+  BlockId add_quad_grid(const std::vector<ParticleId>& grid, int rows, int cols, const Section& s);
+
+  // --- constraints and loads --------------------------------------------
+  void set_lock(ParticleId p, std::uint8_t bits);
+  void set_passive(ParticleId p, bool passive);
+  void set_load(ParticleId p, const Vec3& f);
+  void set_point_mass(ParticleId p, double kg);
+  Vec3 gravity = Vec3::Zero();
+
+  // --- queries -----------------------------------------------------------
+  State state(ParticleId p) const;
+  std::vector<BlockId> blocks_of(ParticleId p) const;  // distinct, ascending
+  std::vector<ParticleId> particles_of(BlockId b) const;  // path order for beams/cables
+  bool particle_valid(ParticleId p) const { return particles.valid(p); }
+  bool block_valid(BlockId b) const { return b < blocks.size() && blocks[b].alive; }
+  std::size_t particle_count() const { return particles.live; }
+  std::size_t block_count() const { return live_blocks_; }
+  std::size_t block_count(BlockKind k) const;
+  std::vector<BlockId> live_blocks() const;
+
+  // --- invariants -----------------------------------------------------------
+  // Map validity, embeddings, block bookkeeping, and element buffers equal to
+  // a fresh rebuild from the map. Empty when valid, else the first violation.
+  std::string check() const;
+  // Recomputes every element buffer from the map (the approach thesis 6.1
+  // criticises; kept to check the local patches and to benchmark them).
+  void rebuild_elements();
+
+  GMap map;
+  Particles particles;
+  std::vector<Block> blocks;
+  ElementBuffer<Bar> bars;
+  ElementBuffer<Hinge> hinges;
+
+  // Per-dart columns: 0-embedding, owning block, element references, and the
+  // ring of darts embedding the same particle.
+  DartColumn<ParticleId>& dart_particle;
+  DartColumn<BlockId>& dart_block;
+  DartColumn<ElementIndex>& dart_bar;
+  DartColumn<ElementIndex>& dart_hinge;
+  DartColumn<Dart>& ring_next;
+  DartColumn<Dart>& ring_prev;
+  DartColumn<double>& rest_length;  // per edge: the bar's rest length [m]
+
+  void require_particle(ParticleId p, const char* what) const;
+  void require_block(BlockId b, const char* what) const;
+
+ private:
+  BlockId new_block(BlockKind k, const Section& s, bool closed);
+  void free_block(BlockId b);
+  Dart new_dart(BlockId b, ParticleId p);
+  void free_dart(Dart d);
+  void embed(Dart d, ParticleId p);
+  void unembed(Dart d);
+  // Edge d-alpha0(d) with a bar; vertex hinge at a beam vertex d-alpha1(d).
+  void set_edge_rest_length(Dart d, double length);
+  void add_bar(Dart d);  // parameters from the block's section and the edge
+  void remove_bar(Dart d);
+  void bind_bar(ElementIndex e);
+  void unbind_bar(ElementIndex e);
+  void add_hinge(Dart d);
+  void remove_hinge(Dart d);
+  void refresh_hinge(Dart d);  // re-reads i, j, k of the hinge at vertex d, if any
+  void refresh_vertex(Dart d);  // after re-embedding d: its bar and nearby hinges
+  Dart find_edge(ParticleId a, ParticleId b, BlockKind k) const;
+  std::vector<Dart> darts_of(ParticleId p) const;
+  void delete_component(BlockId b);
+  Vec3 pos(Dart d) const { return particles.position[dart_particle[d]]; }
+  std::size_t live_blocks_ = 0;
+  std::vector<BlockId> free_blocks_;
+};
+
+}  // namespace tendril

@@ -1,0 +1,369 @@
+// Primitive operations with the semantics of thesis 4.2.7 (rules 1-18 that do
+// not need meshing). Each one validates its arguments before touching the
+// model, so a ModelError leaves the model exactly as it was.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+
+#include "model/model.hpp"
+
+namespace tendril {
+
+namespace {
+std::string pid(ParticleId p) { return std::to_string(p); }
+}  // namespace
+
+// --- particles ---------------------------------------------------------------
+
+ParticleId Model::add_particle(const Vec3& x) {
+  if (!x.allFinite()) throw ModelError("add_particle: position is not finite");
+  return particles.allocate(x);
+}
+
+void Model::delete_particle(ParticleId p) {
+  require_particle(p, "delete_particle");
+  if (particles.degree[p] != 0)
+    throw ModelError("delete_particle: particle " + pid(p) + " is not isolated (state " +
+                     state_name(state(p)) + "); delete or explode its blocks first");
+  particles.release(p);
+}
+
+ParticleId Model::merge(const std::vector<ParticleId>& ps) {
+  std::set<ParticleId> set(ps.begin(), ps.end());
+  if (set.size() < 2) throw ModelError("merge: needs at least two distinct particles");
+  for (ParticleId p : set) {
+    require_particle(p, "merge");
+    State s = state(p);
+    if (s == State::Isolated || s == State::Passive)
+      throw ModelError("merge: particle " + pid(p) + " is " + state_name(s) +
+                       "; only simple or shared particles (locked or not) merge");
+  }
+  // Refuse merges that would collapse an edge or fold a beam onto itself.
+  for (ParticleId p : set) {
+    for (Dart d : darts_of(p)) {
+      Dart n = map.alpha(0, d);
+      if (n != d && set.count(dart_particle[n]))
+        throw ModelError("merge: particles " + pid(p) + " and " + pid(dart_particle[n]) +
+                         " share an edge; merging them would collapse it");
+      if (n != d && !map.is_free(1, n)) {
+        Dart far = map.alpha(0, map.alpha(1, n));
+        if (far != map.alpha(1, n) && set.count(dart_particle[far]) && dart_particle[far] != p)
+          if (blocks[dart_block[d]].kind == BlockKind::Beam)
+            throw ModelError("merge: particles " + pid(p) + " and " + pid(dart_particle[far]) +
+                             " are two apart on a beam; merging them would fold it");
+      }
+    }
+  }
+  Vec3 x = Vec3::Zero(), v = Vec3::Zero(), load = Vec3::Zero();
+  std::uint8_t lock = 0;
+  double point_mass = 0;
+  for (ParticleId p : set) {
+    x += particles.position[p];
+    v += particles.velocity[p];
+    load += particles.load[p];
+    lock |= particles.lock[p];
+    point_mass += particles.point_mass[p];
+  }
+  const double n = static_cast<double>(set.size());
+  ParticleId q = particles.allocate(x / n);
+  particles.velocity[q] = v / n;
+  particles.load[q] = load;
+  particles.lock[q] = lock;
+  particles.point_mass[q] = point_mass;
+  for (ParticleId p : set) {
+    for (Dart d : darts_of(p)) {
+      unembed(d);
+      embed(d, q);
+      refresh_vertex(d);
+    }
+    particles.release(p);
+  }
+  return q;
+}
+
+std::vector<ParticleId> Model::explode(ParticleId p) {
+  require_particle(p, "explode");
+  std::vector<BlockId> bs = blocks_of(p);
+  if (bs.size() < 2)
+    throw ModelError("explode: particle " + pid(p) + " belongs to " + std::to_string(bs.size()) +
+                     " block(s); only shared particles explode");
+  std::vector<ParticleId> out;
+  for (BlockId b : bs) {
+    ParticleId q = particles.allocate(particles.position[p]);
+    particles.velocity[q] = particles.velocity[p];
+    particles.lock[q] = particles.lock[p];
+    if (out.empty()) {  // the particle's own load and mass go to the first block
+      particles.load[q] = particles.load[p];
+      particles.point_mass[q] = particles.point_mass[p];
+    }
+    for (Dart d : darts_of(p)) {
+      if (dart_block[d] != b) continue;
+      unembed(d);
+      embed(d, q);
+      refresh_vertex(d);
+    }
+    out.push_back(q);
+  }
+  particles.release(p);
+  return out;
+}
+
+ParticleId Model::explode_from(ParticleId p, BlockId b) {
+  require_particle(p, "explode_from");
+  require_block(b, "explode_from");
+  std::vector<BlockId> bs = blocks_of(p);
+  if (bs.size() < 2)
+    throw ModelError("explode_from: particle " + pid(p) + " is not shared");
+  if (!std::binary_search(bs.begin(), bs.end(), b))
+    throw ModelError("explode_from: particle " + pid(p) + " is not on block " + std::to_string(b));
+  ParticleId q = particles.allocate(particles.position[p]);
+  particles.velocity[q] = particles.velocity[p];
+  particles.lock[q] = particles.lock[p];
+  for (Dart d : darts_of(p)) {
+    if (dart_block[d] != b) continue;
+    unembed(d);
+    embed(d, q);
+    refresh_vertex(d);
+  }
+  return q;
+}
+
+// --- cables ------------------------------------------------------------------
+
+namespace {
+void check_section(const Section& s, const char* what, bool beam) {
+  auto bad = [&](const char* key) {
+    throw ModelError(std::string(what) + ": " + key + " must be a finite number >= 0");
+  };
+  if (!(s.EA >= 0) || !std::isfinite(s.EA)) bad("EA");
+  if (!(s.EI >= 0) || !std::isfinite(s.EI)) bad("EI");
+  if (!std::isfinite(s.prestress)) bad("prestress");
+  if (!(s.line_mass >= 0) || !std::isfinite(s.line_mass)) bad("line_mass");
+  if (s.EA <= 0) throw ModelError(std::string(what) + ": EA must be > 0");
+  if (beam && s.EI <= 0) throw ModelError(std::string(what) + ": EI must be > 0");
+}
+}  // namespace
+
+BlockId Model::add_cable(ParticleId a, ParticleId b, const Section& s, double rest) {
+  require_particle(a, "cable");
+  require_particle(b, "cable");
+  if (a == b) throw ModelError("cable: both ends are particle " + pid(a));
+  check_section(s, "cable", false);
+  if (!std::isfinite(rest)) throw ModelError("cable: rest_length must be finite");
+  double length = rest > 0 ? rest : (particles.position[a] - particles.position[b]).norm();
+  if (length <= 0) throw ModelError("cable: particles " + pid(a) + " and " + pid(b) + " coincide; give a rest_length");
+  BlockId blk = new_block(BlockKind::Cable, s, false);
+  Dart d = new_dart(blk, a), e = new_dart(blk, b);
+  map.link(0, d, e);
+  set_edge_rest_length(d, length);
+  add_bar(d);
+  return blk;
+}
+
+void Model::delete_cable(BlockId b) {
+  require_block(b, "delete_cable");
+  if (blocks[b].kind != BlockKind::Cable) throw ModelError("delete_cable: block " + std::to_string(b) + " is not a cable");
+  delete_component(b);
+}
+
+void Model::delete_component(BlockId b) {
+  std::vector<Dart> darts = map.orbit(kComponentOrbit, blocks[b].dart);
+  std::sort(darts.begin(), darts.end());
+  std::vector<ParticleId> touched;
+  for (Dart d : darts) {
+    remove_hinge(d);
+    remove_bar(d);
+    touched.push_back(dart_particle[d]);
+  }
+  for (Dart d : darts) free_dart(d);
+  free_block(b);
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  for (ParticleId p : touched)
+    if (particles.degree[p] == 0) particles.release(p);  // rule 2 on what is left isolated
+}
+
+// --- beams -------------------------------------------------------------------
+
+BlockId Model::add_beam(const std::vector<ParticleId>& ps, const Section& s, bool closed) {
+  const std::size_t n = ps.size();
+  if (n < (closed ? 3u : 2u))
+    throw ModelError(std::string("beam: needs at least ") + (closed ? "3" : "2") + " particles, got " + std::to_string(n));
+  std::set<ParticleId> seen;
+  for (ParticleId p : ps) {
+    require_particle(p, "beam");
+    if (!seen.insert(p).second) throw ModelError("beam: particle " + pid(p) + " appears twice");
+  }
+  check_section(s, "beam", true);
+  const std::size_t segments = closed ? n : n - 1;
+  for (std::size_t k = 0; k < segments; ++k) {
+    ParticleId a = ps[k], b = ps[(k + 1) % n];
+    if ((particles.position[a] - particles.position[b]).norm() <= 0)
+      throw ModelError("beam: consecutive particles " + pid(a) + " and " + pid(b) + " coincide");
+  }
+  BlockId blk = new_block(BlockKind::Beam, s, closed);
+  Dart first = kNoDart, prev_end = kNoDart;
+  for (std::size_t k = 0; k < segments; ++k) {
+    ParticleId a = ps[k], b = ps[(k + 1) % n];
+    Dart d = new_dart(blk, a), e = new_dart(blk, b);
+    map.link(0, d, e);
+    set_edge_rest_length(d, (particles.position[a] - particles.position[b]).norm());
+    if (prev_end != kNoDart) map.link(1, prev_end, d);
+    if (first == kNoDart) first = d;
+    prev_end = e;
+  }
+  if (closed) map.link(1, prev_end, first);
+  blocks[blk].dart = first;
+  for (Dart d : map.orbit(kComponentOrbit, first)) {
+    if (dart_bar[d] == kNone) add_bar(d);
+    if (dart_hinge[d] == kNone && !map.is_free(1, d)) add_hinge(d);
+  }
+  return blk;
+}
+
+BlockId Model::add_beam_from(ParticleId start, const Vec3& span, int segments, const Section& s) {
+  require_particle(start, "beam_from");
+  if (segments < 1) throw ModelError("beam_from: segments must be >= 1, got " + std::to_string(segments));
+  if (!(span.norm() > 0) || !span.allFinite()) throw ModelError("beam_from: direction must be a finite non-zero vector");
+  check_section(s, "beam_from", true);
+  std::vector<ParticleId> ps{start};
+  for (int k = 1; k <= segments; ++k)
+    ps.push_back(particles.allocate(particles.position[start] + span * (double(k) / segments)));
+  return add_beam(ps, s, false);
+}
+
+Dart Model::find_edge(ParticleId a, ParticleId b, BlockKind k) const {
+  for (Dart d : darts_of(a)) {
+    Dart e = map.alpha(0, d);
+    if (e != d && dart_particle[e] == b && blocks[dart_block[d]].kind == k) return d;
+  }
+  return kNoDart;
+}
+
+ParticleId Model::insert_particle(ParticleId a, ParticleId b) {
+  require_particle(a, "insert_particle");
+  require_particle(b, "insert_particle");
+  Dart d = find_edge(a, b, BlockKind::Beam);
+  if (d == kNoDart)
+    throw ModelError("insert_particle: particles " + pid(a) + " and " + pid(b) + " are not consecutive on a beam");
+  const BlockId blk = dart_block[d];
+  const Dart e = map.alpha(0, d);
+  const double half = 0.5 * rest_length[d];
+  remove_bar(d);
+  map.unlink(0, d);
+  ParticleId q = particles.allocate(0.5 * (particles.position[a] + particles.position[b]));
+  particles.velocity[q] = 0.5 * (particles.velocity[a] + particles.velocity[b]);
+  Dart d2 = new_dart(blk, q), e2 = new_dart(blk, q);
+  map.link(0, d, d2);
+  map.link(1, d2, e2);
+  map.link(0, e2, e);
+  set_edge_rest_length(d, half);
+  set_edge_rest_length(e, half);
+  add_bar(d);
+  add_bar(e);
+  add_hinge(d2);
+  refresh_hinge(d);
+  refresh_hinge(e);
+  return q;
+}
+
+void Model::remove_from_beam(ParticleId p) {
+  require_particle(p, "remove_from_beam");
+  State s = state(p);
+  std::vector<Dart> ds = darts_of(p);
+  if (s != State::Simple || blocks[dart_block[ds[0]]].kind != BlockKind::Beam || ds.size() > 2)
+    throw ModelError("remove_from_beam: particle " + pid(p) + " is " + state_name(s) +
+                     "; only a simple particle of one beam can be removed");
+  const BlockId blk = dart_block[ds[0]];
+  Block& block = blocks[blk];
+  if (ds.size() == 2) {  // interior: bridge the two neighbours
+    if (block.closed && block.darts <= 6)
+      throw ModelError("remove_from_beam: a ring keeps at least 3 particles");
+    Dart d = ds[0], e = map.alpha(1, d);
+    Dart a = map.alpha(0, d), b = map.alpha(0, e);
+    const double length = rest_length[d] + rest_length[e];
+    remove_hinge(d);
+    remove_bar(d);
+    remove_bar(e);
+    if (block.dart == d || block.dart == e) block.dart = block.closed ? a : block.dart;
+    free_dart(d);
+    free_dart(e);
+    map.link(0, a, b);
+    set_edge_rest_length(a, length);
+    add_bar(a);
+    refresh_hinge(a);
+    refresh_hinge(b);
+    if (block.dart == kNoDart) block.dart = a;
+  } else if (block.darts == 2) {  // the last segment: the beam goes
+    delete_component(blk);
+    return;  // p was released as isolated by delete_component
+  } else {  // an end: drop the end segment
+    Dart d = ds[0], a = map.alpha(0, d), a1 = map.alpha(1, a);
+    remove_hinge(a);
+    remove_bar(d);
+    free_dart(d);
+    free_dart(a);
+    block.dart = a1;
+  }
+  particles.release(p);
+}
+
+void Model::delete_beam(BlockId b) {
+  require_block(b, "delete_beam");
+  if (blocks[b].kind != BlockKind::Beam) throw ModelError("delete_beam: block " + std::to_string(b) + " is not a beam");
+  delete_component(b);
+}
+
+// --- quad grid patch -----------------------------------------------------------
+
+BlockId Model::add_quad_grid(const std::vector<ParticleId>& grid, int rows, int cols, const Section& s) {
+  if (rows < 2 || cols < 2) throw ModelError("quad_grid: needs at least 2 rows and 2 columns");
+  if (grid.size() != std::size_t(rows) * cols)
+    throw ModelError("quad_grid: expected " + std::to_string(rows * cols) + " particles, got " + std::to_string(grid.size()));
+  std::set<ParticleId> seen;
+  for (ParticleId p : grid) {
+    require_particle(p, "quad_grid");
+    if (!seen.insert(p).second) throw ModelError("quad_grid: particle " + pid(p) + " appears twice");
+  }
+  check_section(s, "quad_grid", false);
+  BlockId blk = new_block(BlockKind::Patch, s, false);
+  // side[q][k][0|1]: dart of quad q on side k at its start / end corner.
+  const int qr = rows - 1, qc = cols - 1;
+  std::vector<std::array<std::array<Dart, 2>, 4>> side(std::size_t(qr) * qc);
+  for (int r = 0; r < qr; ++r)
+    for (int c = 0; c < qc; ++c) {
+      ParticleId corner[4] = {grid[r * cols + c], grid[r * cols + c + 1], grid[(r + 1) * cols + c + 1],
+                              grid[(r + 1) * cols + c]};
+      auto& q = side[r * qc + c];
+      for (int k = 0; k < 4; ++k) {
+        q[k][0] = new_dart(blk, corner[k]);
+        q[k][1] = new_dart(blk, corner[(k + 1) % 4]);
+        map.link(0, q[k][0], q[k][1]);
+      }
+      for (int k = 0; k < 4; ++k) map.link(1, q[k][1], q[(k + 1) % 4][0]);
+    }
+  for (int r = 0; r < qr; ++r)
+    for (int c = 0; c < qc; ++c) {
+      auto& q = side[r * qc + c];
+      if (c + 1 < qc) {  // right side 1 (c1->c2) against the neighbour's left side 3 (c3->c0)
+        auto& n = side[r * qc + c + 1];
+        map.link(2, q[1][0], n[3][1]);
+        map.link(2, q[1][1], n[3][0]);
+      }
+      if (r + 1 < qr) {  // bottom side 2 (c2->c3) against the neighbour's top side 0 (c0->c1)
+        auto& n = side[(r + 1) * qc + c];
+        map.link(2, q[2][0], n[0][1]);
+        map.link(2, q[2][1], n[0][0]);
+      }
+    }
+  blocks[blk].dart = side[0][0][0];
+  for (Dart d : map.orbit(kComponentOrbit, side[0][0][0]))
+    if (dart_bar[d] == kNone) {
+      set_edge_rest_length(d, (pos(d) - pos(map.alpha(0, d))).norm());
+      add_bar(d);
+    }
+  return blk;
+}
+
+}  // namespace tendril

@@ -1,0 +1,52 @@
+#include "model/particles.hpp"
+
+namespace tendril {
+
+ParticleId Particles::allocate(const Vec3& x) {
+  ParticleId p;
+  if (!free_slots.empty()) {
+    p = free_slots.back();
+    free_slots.pop_back();
+  } else {
+    p = static_cast<ParticleId>(alive.size());
+    position.emplace_back();
+    velocity.emplace_back();
+    force.emplace_back();
+    load.emplace_back();
+    stiffness.push_back(0);
+    point_mass.push_back(0);
+    lumped_mass.push_back(0);
+    lock.push_back(0);
+    alive.push_back(0);
+    passive.push_back(0);
+    active.push_back(0);
+    generation.push_back(0);
+    first_dart.push_back(kNone);
+    degree.push_back(0);
+  }
+  position[p] = x;
+  velocity[p].setZero();
+  force[p].setZero();
+  load[p].setZero();
+  stiffness[p] = 0;
+  point_mass[p] = 0;
+  lumped_mass[p] = 0;
+  lock[p] = 0;
+  alive[p] = 1;
+  passive[p] = 0;
+  active[p] = 0;
+  first_dart[p] = kNone;
+  degree[p] = 0;
+  ++live;
+  return p;
+}
+
+void Particles::release(ParticleId p) {
+  alive[p] = 0;
+  active[p] = 0;
+  ++generation[p];
+  free_slots.push_back(p);
+  --live;
+}
+
+}  // namespace tendril

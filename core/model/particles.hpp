@@ -1,0 +1,32 @@
+#pragma once
+// Flat particle buffers (structure of arrays) indexed by particle id. Slots of
+// deleted particles are recycled; a generation counter invalidates handles.
+#include <vector>
+
+#include "model/types.hpp"
+
+namespace tendril {
+
+struct Particles {
+  std::vector<Vec3> position, velocity, force, load;
+  std::vector<double> stiffness;   // greatest direct stiffness S (eq. 3.4)
+  std::vector<double> point_mass;  // physical mass set on the particle [kg]
+  std::vector<double> lumped_mass; // physical mass lumped from its elements
+  std::vector<std::uint8_t> lock;  // LockBits
+  std::vector<std::uint8_t> alive, passive;
+  std::vector<std::uint8_t> active;  // integrated this step: alive, has blocks, not passive
+  std::vector<std::uint32_t> generation;
+  std::vector<std::uint32_t> first_dart;  // head of the ring of darts embedding it
+  std::vector<std::uint32_t> degree;      // number of darts embedding it
+  std::vector<ParticleId> free_slots;
+  std::size_t live = 0;
+
+  std::size_t capacity() const { return alive.size(); }
+  bool valid(ParticleId p) const { return p < alive.size() && alive[p]; }
+  double mass(ParticleId p) const { return point_mass[p] + lumped_mass[p]; }
+  ParticleId allocate(const Vec3& x);
+  void release(ParticleId p);
+  void refresh_active(ParticleId p) { active[p] = alive[p] && degree[p] > 0 && !passive[p]; }
+};
+
+}  // namespace tendril

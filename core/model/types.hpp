@@ -1,0 +1,42 @@
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace tendril {
+
+using Vec3 = Eigen::Vector3d;
+using ParticleId = std::uint32_t;
+using BlockId = std::uint32_t;
+using ElementIndex = std::uint32_t;
+inline constexpr std::uint32_t kNone = 0xffffffffu;
+
+// Vertex states of thesis 4.2.6, derived from blocks and constraints.
+enum class State { Isolated, Passive, Lock, FullLock, Simple, Shared };
+const char* state_name(State s);
+
+enum class BlockKind { Cable, Beam, Patch };
+const char* block_kind_name(BlockKind k);
+
+// Lock bits: translation x, y, z then rotation x, y, z (global axes).
+enum LockBits : std::uint8_t { kLockX = 1, kLockY = 2, kLockZ = 4, kLockRX = 8, kLockRY = 16, kLockRZ = 32 };
+inline constexpr std::uint8_t kLockTranslation = kLockX | kLockY | kLockZ;
+inline constexpr std::uint8_t kLockRotation = kLockRX | kLockRY | kLockRZ;
+
+// Section and material of a block. Stiffnesses are given as products so a
+// scene may state either E, A, I or EA, EI directly.
+struct Section {
+  double EA = 0;         // axial stiffness [N]
+  double EI = 0;         // bending stiffness [N m^2], beams only
+  double prestress = 0;  // geometric tension T of eq. 3.32 [N]
+  double line_mass = 0;  // physical mass per length [kg/m], lumped to particles
+};
+
+// Thrown for any invalid request on the model: the model is unchanged.
+struct ModelError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace tendril

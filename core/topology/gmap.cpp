@@ -1,0 +1,124 @@
+#include "topology/gmap.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace tendril {
+
+Dart GMap::create_dart() {
+  Dart d;
+  if (!free_list_.empty()) {
+    d = free_list_.back();
+    free_list_.pop_back();
+    for (auto& c : columns_) c->reset(d);
+  } else {
+    d = static_cast<Dart>(alive_.size());
+    for (auto& a : alpha_) a.push_back(d);
+    alive_.push_back(0);
+    stamp_.push_back(0);
+    for (auto& c : columns_) c->resize(alive_.size());
+  }
+  for (auto& a : alpha_) a[d] = d;
+  alive_[d] = 1;
+  ++live_;
+  return d;
+}
+
+void GMap::delete_dart(Dart d) {
+  if (!alive(d)) throw std::logic_error("delete_dart: dart is not alive");
+  for (int i = 0; i < 3; ++i)
+    if (!is_free(i, d)) throw std::logic_error("delete_dart: dart is still linked");
+  alive_[d] = 0;
+  free_list_.push_back(d);
+  --live_;
+}
+
+void GMap::link(int i, Dart a, Dart b) {
+  if (!alive(a) || !alive(b)) throw std::logic_error("link: dart is not alive");
+  if (!is_free(i, a) || !is_free(i, b)) throw std::logic_error("link: dart is not free");
+  alpha_[i][a] = b;
+  alpha_[i][b] = a;
+}
+
+void GMap::unlink(int i, Dart d) {
+  Dart e = alpha_[i][d];
+  alpha_[i][d] = d;
+  alpha_[i][e] = e;
+}
+
+void GMap::for_orbit(unsigned mask, Dart d, const std::function<bool(Dart)>& f) const {
+  // Visit stamps make a traversal linear in the orbit size. A traversal
+  // started from inside another one (f calling for_orbit) must not disturb
+  // the outer stamps, so it falls back to a sorted visited list.
+  const bool nested = in_traversal_;
+  std::vector<Dart> queue{d};
+  std::vector<Dart> seen;
+  std::uint32_t epoch = 0;
+  if (!nested) {
+    if (++epoch_ == 0) {
+      std::fill(stamp_.begin(), stamp_.end(), 0);
+      epoch_ = 1;
+    }
+    epoch = epoch_;
+    stamp_[d] = epoch;
+  } else {
+    seen.push_back(d);
+  }
+  auto visit = [&](Dart y) {
+    if (!nested) {
+      if (stamp_[y] == epoch) return false;
+      stamp_[y] = epoch;
+      return true;
+    }
+    auto it = std::lower_bound(seen.begin(), seen.end(), y);
+    if (it != seen.end() && *it == y) return false;
+    seen.insert(it, y);
+    return true;
+  };
+  in_traversal_ = true;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    Dart x = queue[head];
+    if (!f(x)) break;
+    for (int i = 0; i < 3; ++i)
+      if ((mask & (1u << i)) && visit(alpha_[i][x])) queue.push_back(alpha_[i][x]);
+  }
+  in_traversal_ = nested;
+}
+
+std::vector<Dart> GMap::orbit(unsigned mask, Dart d) const {
+  std::vector<Dart> out;
+  for_orbit(mask, d, [&](Dart x) {
+    out.push_back(x);
+    return true;
+  });
+  return out;
+}
+
+std::size_t GMap::orbit_size(unsigned mask, Dart d) const {
+  std::size_t n = 0;
+  for_orbit(mask, d, [&](Dart) {
+    ++n;
+    return true;
+  });
+  return n;
+}
+
+std::string GMap::check() const {
+  for (Dart d = 0; d < alive_.size(); ++d) {
+    if (!alive_[d]) continue;
+    for (int i = 0; i < 3; ++i) {
+      Dart e = alpha_[i][d];
+      if (e >= alive_.size() || !alive_[e])
+        return "dart " + std::to_string(d) + ": alpha" + std::to_string(i) + " points to a dead dart";
+      if (alpha_[i][e] != d)
+        return "dart " + std::to_string(d) + ": alpha" + std::to_string(i) + " is not an involution";
+    }
+    // Quasi-manifold: alpha0 o alpha2 must be an involution.
+    Dart e = alpha_[2][alpha_[0][d]];
+    if (alpha_[2][alpha_[0][e]] != d)
+      return "dart " + std::to_string(d) + ": alpha0 o alpha2 is not an involution";
+  }
+  return {};
+}
+
+}  // namespace tendril

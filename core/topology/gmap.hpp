@@ -1,0 +1,96 @@
+#pragma once
+// A 2-dimensional generalized map (thesis 4.2.2-4.2.4): darts are compact
+// integer indices, the involutions alpha0..alpha2 are arrays, and a free
+// involution is a fixed point (a boundary). Deleted darts are recycled.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tendril {
+
+using Dart = std::uint32_t;
+inline constexpr Dart kNoDart = 0xffffffffu;
+
+// A column of per-dart data that follows the map through creation, deletion
+// and reuse of darts (CGoGN style). Columns are registered with the map.
+class ColumnBase {
+ public:
+  virtual ~ColumnBase() = default;
+  virtual void resize(std::size_t n) = 0;
+  virtual void reset(Dart d) = 0;
+};
+
+template <class T>
+class DartColumn final : public ColumnBase {
+ public:
+  explicit DartColumn(T fill) : fill_(fill) {}
+  T& operator[](Dart d) { return data_[d]; }
+  const T& operator[](Dart d) const { return data_[d]; }
+  void resize(std::size_t n) override { data_.resize(n, fill_); }
+  void reset(Dart d) override { data_[d] = fill_; }
+  std::size_t size() const { return data_.size(); }
+
+ private:
+  T fill_;
+  std::vector<T> data_;
+};
+
+// Bit mask of involutions spanning an orbit: vertex <a1,a2>, edge <a0,a2>,
+// face <a0,a1>, connected component <a0,a1,a2>.
+enum OrbitMask : unsigned { kA0 = 1, kA1 = 2, kA2 = 4 };
+inline constexpr unsigned kVertexOrbit = kA1 | kA2;
+inline constexpr unsigned kEdgeOrbit = kA0 | kA2;
+inline constexpr unsigned kFaceOrbit = kA0 | kA1;
+inline constexpr unsigned kComponentOrbit = kA0 | kA1 | kA2;
+
+class GMap {
+ public:
+  Dart create_dart();
+  void delete_dart(Dart d);  // the dart must be free for every involution
+  bool alive(Dart d) const { return d < alive_.size() && alive_[d]; }
+
+  Dart alpha(int i, Dart d) const { return alpha_[i][d]; }
+  bool is_free(int i, Dart d) const { return alpha_[i][d] == d; }
+  // Makes alpha_i(a) = b and alpha_i(b) = a; both must be i-free.
+  void link(int i, Dart a, Dart b);
+  // Frees d and its alpha_i image.
+  void unlink(int i, Dart d);
+
+  // Visits every dart of the orbit of d spanned by `mask`, in a deterministic
+  // breadth-first order starting at d. Returns early when f returns false.
+  void for_orbit(unsigned mask, Dart d, const std::function<bool(Dart)>& f) const;
+  std::vector<Dart> orbit(unsigned mask, Dart d) const;
+  std::size_t orbit_size(unsigned mask, Dart d) const;
+
+  std::size_t dart_count() const { return live_; }
+  std::size_t capacity() const { return alive_.size(); }
+
+  // Involution and quasi-manifold checks (alpha0 o alpha2 is an involution).
+  // Returns an empty string when valid, otherwise the first violation.
+  std::string check() const;
+
+  template <class T>
+  DartColumn<T>& add_column(T fill) {
+    auto c = std::make_unique<DartColumn<T>>(fill);
+    c->resize(alive_.size());
+    auto& ref = *c;
+    columns_.push_back(std::move(c));
+    return ref;
+  }
+
+ private:
+  std::array<std::vector<Dart>, 3> alpha_;
+  std::vector<std::uint8_t> alive_;
+  std::vector<Dart> free_list_;
+  std::vector<std::unique_ptr<ColumnBase>> columns_;
+  std::size_t live_ = 0;
+  // Scratch for orbit traversal: a visit stamp per dart avoids clearing.
+  mutable std::vector<std::uint32_t> stamp_;
+  mutable std::uint32_t epoch_ = 0;
+  mutable bool in_traversal_ = false;
+};
+
+}  // namespace tendril
