@@ -1,0 +1,788 @@
+// The model database: writing walks the live model in id order; reading first
+// turns the whole document into plain records (every check with the file's
+// line, element and attribute), then builds. Building happens twice, first
+// into a scratch model, so that even a failure the checks did not foresee
+// leaves the caller's model untouched.
+#include "io/model_xml.hpp"
+
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace tendril {
+
+namespace {
+
+constexpr int kVersion = 1;
+
+// 17 significant digits: every double reads back to the same bits.
+std::string number(double v) {
+  char buf[40];
+  auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 17);
+  return std::string(buf, r.ptr);
+}
+
+// --- patches as quad grids ------------------------------------------------------
+
+// A patch as add_quad_grid builds it: nodes row-major, one rest length per
+// grid edge in edges() order (horizontal edges row by row, then vertical).
+struct QuadGrid {
+  struct Edge {
+    std::size_t a, b, index;  // grid node indices
+  };
+  int rows = 0, cols = 0;
+  std::vector<ParticleId> nodes;
+  std::vector<double> rest;
+
+  static std::vector<Edge> edges(int rows, int cols) {
+    std::vector<Edge> out;
+    const std::size_t R = std::size_t(rows), C = std::size_t(cols);
+    for (std::size_t r = 0; r < R; ++r)
+      for (std::size_t c = 0; c + 1 < C; ++c) out.push_back({r * C + c, r * C + c + 1, out.size()});
+    for (std::size_t r = 0; r + 1 < R; ++r)
+      for (std::size_t c = 0; c < C; ++c) out.push_back({r * C + c, (r + 1) * C + c, out.size()});
+    return out;
+  }
+  std::vector<Edge> edges() const { return edges(rows, cols); }
+};
+
+// Reads the grid back from the map, taking `d00` as quad (0,0)'s dart at its
+// first corner on its top side, the way add_quad_grid links the darts: in a
+// quad, alpha1(alpha0(.)) steps from side k to side k+1, the right neighbour
+// is sewn to side 1 and the one below to side 2.
+bool walk_quad_grid(const Model& m, BlockId b, Dart d00, QuadGrid& g) {
+  const GMap& map = m.map;
+  auto a = [&](int i, Dart d) { return map.alpha(i, d); };
+  auto side1 = [&](Dart q) { return a(1, a(0, q)); };
+  auto side2 = [&](Dart q) { return a(1, a(0, side1(q))); };
+  auto right = [&](Dart q) { Dart s = side1(q); return map.is_free(2, s) ? kNoDart : a(1, a(2, s)); };
+  auto down = [&](Dart q) { Dart s = side2(q); return map.is_free(2, s) ? kNoDart : a(0, a(2, s)); };
+
+  const std::size_t total = m.blocks[b].darts, quads = total / 8;
+  if (total == 0 || total % 8 != 0) return false;
+  if (!map.is_free(2, d00) || !map.is_free(2, a(1, d00))) return false;
+  std::size_t qr = 1, qc = 1;
+  for (Dart q = right(d00); q != kNoDart; q = right(q))
+    if (++qc > quads) return false;
+  for (Dart q = down(d00); q != kNoDart; q = down(q))
+    if (++qr > quads) return false;
+  if (qr * qc != quads) return false;
+
+  std::vector<Dart> start(quads, kNoDart);
+  std::set<Dart> seen;
+  Dart row = d00;
+  for (std::size_t r = 0; r < qr; ++r, row = down(row)) {
+    if (row == kNoDart) return false;
+    Dart q = row;
+    for (std::size_t c = 0; c < qc; ++c, q = right(q)) {
+      if (q == kNoDart || map.orbit_size(kFaceOrbit, q) != 8) return false;
+      for (Dart x : map.orbit(kFaceOrbit, q))
+        if (!seen.insert(x).second) return false;
+      if (map.is_free(2, q) != (r == 0) || map.is_free(2, a(1, q)) != (c == 0)) return false;
+      start[r * qc + c] = q;
+    }
+    if (q != kNoDart) return false;
+  }
+  for (std::size_t r = 0; r < qr; ++r)
+    for (std::size_t c = 0; c < qc; ++c)
+      if (down(start[r * qc + c]) != (r + 1 < qr ? start[(r + 1) * qc + c] : kNoDart)) return false;
+
+  const std::size_t R = qr + 1, C = qc + 1;
+  g.rows = int(R);
+  g.cols = int(C);
+  g.nodes.assign(R * C, kNone);
+  auto put = [&](std::size_t r, std::size_t c, Dart d) {
+    ParticleId p = m.dart_particle[d];
+    ParticleId& slot = g.nodes[r * C + c];
+    if (slot != kNone && slot != p) return false;
+    slot = p;
+    return true;
+  };
+  for (std::size_t r = 0; r < qr; ++r)
+    for (std::size_t c = 0; c < qc; ++c) {
+      Dart q = start[r * qc + c];
+      if (!put(r, c, q) || !put(r, c + 1, a(0, q)) || !put(r + 1, c + 1, a(0, side1(q))) ||
+          !put(r + 1, c, a(0, side2(q))))
+        return false;
+    }
+  std::vector<ParticleId> sorted = g.nodes;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+
+  g.rest.clear();
+  for (const QuadGrid::Edge& e : g.edges()) {
+    const std::size_t r = e.a / C, c = e.a % C;
+    Dart d;
+    if (e.b == e.a + 1)  // horizontal: the top side of the quad below it, or the bottom one of the last row
+      d = r < qr ? start[r * qc + c] : side2(start[(qr - 1) * qc + c]);
+    else  // vertical: the left side of the quad right of it, or the right one of the last column
+      d = c < qc ? a(1, start[r * qc + c]) : side1(start[r * qc + qc - 1]);
+    g.rest.push_back(m.rest_length[d]);
+  }
+  return true;
+}
+
+bool find_quad_grid(const Model& m, BlockId b, QuadGrid& g) {
+  const Dart first = m.blocks[b].dart;
+  if (walk_quad_grid(m, b, first, g)) return true;
+  std::vector<Dart> darts = m.map.orbit(kComponentOrbit, first);
+  std::sort(darts.begin(), darts.end());
+  for (Dart d : darts)
+    if (d != first && walk_quad_grid(m, b, d, g)) return true;
+  return false;
+}
+
+// --- writing -----------------------------------------------------------------
+
+class Writer {
+ public:
+  explicit Writer(tinyxml2::XMLPrinter& out) : out_(out) {}
+  void open(const char* name) { out_.OpenElement(name); }
+  void close() { out_.CloseElement(); }
+  void attr(const char* name, double v) { out_.PushAttribute(name, number(v).c_str()); }
+  void attr(const char* name, unsigned v) { out_.PushAttribute(name, std::to_string(v).c_str()); }
+  void attr(const char* name, const char* v) { out_.PushAttribute(name, v); }
+
+ private:
+  tinyxml2::XMLPrinter& out_;
+};
+
+void write_section(Writer& w, const Section& s) {
+  w.attr("EA", s.EA);
+  w.attr("EI", s.EI);
+  w.attr("prestress", s.prestress);
+  w.attr("line_mass", s.line_mass);
+}
+
+std::string write_document(const Model& m, const SolverSettings& s) {
+  // Dense file ids in the order of live ids.
+  std::vector<unsigned> dense(m.particles.capacity(), kNone);
+  unsigned n = 0;
+  for (ParticleId p = 0; p < m.particles.capacity(); ++p)
+    if (m.particles.valid(p)) dense[p] = n++;
+
+  tinyxml2::XMLPrinter out;
+  out.PushHeader(false, true);
+  Writer w(out);
+  w.open("tendril");
+  w.attr("version", unsigned(kVersion));
+
+  w.open("solver");
+  w.attr("dt", s.dt);
+  w.attr("damping", damping_name(s.damping));
+  w.attr("viscous", s.viscous);
+  w.attr("geometric_factor", s.geometric_factor);
+  w.attr("mass_factor", s.mass_factor);
+  w.close();
+
+  w.open("gravity");
+  w.attr("x", m.gravity.x());
+  w.attr("y", m.gravity.y());
+  w.attr("z", m.gravity.z());
+  w.close();
+
+  const Particles& ps = m.particles;
+  w.open("particles");
+  for (ParticleId p = 0; p < ps.capacity(); ++p) {
+    if (!ps.valid(p)) continue;
+    w.open("particle");
+    w.attr("id", dense[p]);
+    w.attr("x", ps.position[p].x());
+    w.attr("y", ps.position[p].y());
+    w.attr("z", ps.position[p].z());
+    w.attr("vx", ps.velocity[p].x());
+    w.attr("vy", ps.velocity[p].y());
+    w.attr("vz", ps.velocity[p].z());
+    w.attr("lock", unsigned(ps.lock[p]));
+    w.attr("passive", unsigned(ps.passive[p] ? 1 : 0));
+    w.attr("point_mass", ps.point_mass[p]);
+    w.attr("fx", ps.load[p].x());
+    w.attr("fy", ps.load[p].y());
+    w.attr("fz", ps.load[p].z());
+    w.close();
+  }
+  w.close();
+
+  w.open("blocks");
+  unsigned id = 0;
+  for (BlockId b : m.live_blocks()) {
+    const Block& blk = m.blocks[b];
+    switch (blk.kind) {
+      case BlockKind::Cable: {
+        Dart d = blk.dart;
+        w.open("cable");
+        w.attr("id", id);
+        w.attr("a", dense[m.dart_particle[d]]);
+        w.attr("b", dense[m.dart_particle[m.map.alpha(0, d)]]);
+        write_section(w, blk.section);
+        w.attr("rest_length", m.rest_length[d]);
+        w.close();
+        break;
+      }
+      case BlockKind::Beam: {
+        w.open("beam");
+        w.attr("id", id);
+        w.attr("closed", unsigned(blk.closed ? 1 : 0));
+        write_section(w, blk.section);
+        // Path order from the block's start dart, as particles_of walks it.
+        Dart d = blk.dart;
+        for (std::size_t guard = 0; guard <= blk.darts; ++guard) {
+          w.open("node");
+          w.attr("p", dense[m.dart_particle[d]]);
+          w.close();
+          w.open("segment");
+          w.attr("rest", m.rest_length[d]);
+          w.close();
+          Dart e = m.map.alpha(0, d), next = m.map.alpha(1, e);
+          if (next == e) {
+            w.open("node");
+            w.attr("p", dense[m.dart_particle[e]]);
+            w.close();
+            break;
+          }
+          if (next == blk.dart) break;
+          d = next;
+        }
+        w.close();
+        break;
+      }
+      case BlockKind::Patch: {
+        QuadGrid g;
+        if (!find_quad_grid(m, b, g))
+          throw ModelError("save_model_xml: patch " + std::to_string(b) +
+                           " is not a quad grid of distinct particles; the model database holds only those");
+        w.open("patch");
+        w.attr("id", id);
+        w.attr("rows", unsigned(g.rows));
+        w.attr("cols", unsigned(g.cols));
+        write_section(w, blk.section);
+        for (ParticleId p : g.nodes) {
+          w.open("node");
+          w.attr("p", dense[p]);
+          w.close();
+        }
+        for (const QuadGrid::Edge& e : g.edges()) {
+          w.open("edge");
+          w.attr("a", dense[g.nodes[e.a]]);
+          w.attr("b", dense[g.nodes[e.b]]);
+          w.attr("rest", g.rest[e.index]);
+          w.close();
+        }
+        w.close();
+        break;
+      }
+    }
+    ++id;
+  }
+  w.close();
+  w.close();
+  return std::string(out.CStr(), std::size_t(out.CStrSize() - 1));
+}
+
+// --- reading: records --------------------------------------------------------
+
+struct ParticleRecord {
+  unsigned id = 0;
+  Vec3 x = Vec3::Zero(), v = Vec3::Zero(), load = Vec3::Zero();
+  unsigned lock = 0;
+  bool passive = false;
+  double point_mass = 0;
+  const tinyxml2::XMLElement* element = nullptr;
+};
+
+struct EdgeRecord {
+  unsigned a, b;  // file ids
+  double rest;
+};
+
+struct BlockRecord {
+  BlockKind kind = BlockKind::Cable;
+  unsigned id = 0;
+  Section section;
+  bool closed = false;
+  int rows = 0, cols = 0;
+  std::vector<unsigned> nodes;  // file ids: cable ends, beam path, grid row-major
+  std::vector<EdgeRecord> edges;
+  const tinyxml2::XMLElement* element = nullptr;
+};
+
+struct Document {
+  SolverSettings settings;
+  Vec3 gravity = Vec3::Zero();
+  std::vector<ParticleRecord> particles;  // ascending id
+  std::vector<BlockRecord> blocks;        // ascending id
+};
+
+class Reader {
+ public:
+  explicit Reader(std::string name) : name_(std::move(name)) {}
+
+  [[noreturn]] void fail(const tinyxml2::XMLElement* e, const std::string& what) const {
+    throw ModelFormatError(name_ + ":" + std::to_string(e->GetLineNum()) + ": " + describe(e) + ": " + what);
+  }
+  [[noreturn]] void fail(const std::string& what) const { throw ModelFormatError(name_ + ": " + what); }
+
+  static std::string tag(const tinyxml2::XMLElement* e) {
+    std::string s = std::string("<") + e->Name();
+    for (const char* key : {"id", "p", "a", "b"})
+      if (const char* v = e->Attribute(key)) s += std::string(" ") + key + "=\"" + v + "\"";
+    return s + ">";
+  }
+  // The element, behind its block when it is a node, segment or edge.
+  static std::string describe(const tinyxml2::XMLElement* e) {
+    const tinyxml2::XMLNode* parent = e->Parent();
+    const tinyxml2::XMLElement* pe = parent ? parent->ToElement() : nullptr;
+    if (pe && (std::strcmp(pe->Name(), "beam") == 0 || std::strcmp(pe->Name(), "patch") == 0))
+      return tag(pe) + ": " + tag(e);
+    return tag(e);
+  }
+
+  Document read(const tinyxml2::XMLDocument& doc) const;
+
+ private:
+  std::string name_;
+  void read_solver(const tinyxml2::XMLElement* e, SolverSettings& s) const;
+  ParticleRecord read_particle(const tinyxml2::XMLElement* e) const;
+  BlockRecord read_cable(const tinyxml2::XMLElement* e) const;
+  BlockRecord read_beam(const tinyxml2::XMLElement* e) const;
+  BlockRecord read_patch(const tinyxml2::XMLElement* e) const;
+  void check_references(const Document& d) const;
+  void no_children(const tinyxml2::XMLElement* e) const {
+    if (const tinyxml2::XMLElement* c = e->FirstChildElement())
+      fail(c, std::string("unknown element <") + c->Name() + "> inside <" + e->Name() + ">");
+  }
+  friend class Attributes;
+};
+
+// Reads the attributes of one element; done() rejects any it did not ask for.
+class Attributes {
+ public:
+  Attributes(const Reader& r, const tinyxml2::XMLElement* e) : r_(r), e_(e) {}
+
+  const char* raw(const char* name) {
+    used_.insert(name);
+    return e_->Attribute(name);
+  }
+  const char* text(const char* name) {
+    const char* v = raw(name);
+    if (!v) missing(name);
+    return v;
+  }
+  double real(const char* name) { return parse_real(name, text(name)); }
+  double real(const char* name, double fallback) {
+    const char* v = raw(name);
+    return v ? parse_real(name, v) : fallback;
+  }
+  unsigned index(const char* name) { return parse_index(name, text(name)); }
+  unsigned index(const char* name, unsigned fallback) {
+    const char* v = raw(name);
+    return v ? parse_index(name, v) : fallback;
+  }
+  bool flag(const char* name, bool fallback) {
+    const char* v = raw(name);
+    if (!v) return fallback;
+    std::string s = v;
+    if (s == "1" || s == "true") return true;
+    if (s == "0" || s == "false") return false;
+    r_.fail(e_, std::string("attribute '") + name + "' is not 0 or 1: \"" + s + "\"");
+  }
+  [[noreturn]] void bad(const char* name, const std::string& what) {
+    r_.fail(e_, std::string("attribute '") + name + "' " + what);
+  }
+  void done() {
+    for (const tinyxml2::XMLAttribute* a = e_->FirstAttribute(); a; a = a->Next())
+      if (!used_.count(a->Name())) r_.fail(e_, std::string("unknown attribute '") + a->Name() + "'");
+  }
+  // Section attributes shared by all blocks; EI is required for beams only.
+  Section section(bool beam) {
+    Section s;
+    s.EA = real("EA");
+    s.EI = beam ? real("EI") : real("EI", 0.0);
+    s.prestress = real("prestress", 0.0);
+    s.line_mass = real("line_mass", 0.0);
+    if (!(s.EA > 0)) bad("EA", "must be > 0");
+    if (beam ? !(s.EI > 0) : !(s.EI >= 0)) bad("EI", beam ? "must be > 0" : "must be >= 0");
+    if (!(s.line_mass >= 0)) bad("line_mass", "must be >= 0");
+    return s;
+  }
+
+ private:
+  [[noreturn]] void missing(const char* name) { bad(name, "is missing"); }
+  double parse_real(const char* name, const char* v) {
+    const char* end = v + std::strlen(v);
+    while (v < end && *v == ' ') ++v;
+    while (end > v && end[-1] == ' ') --end;
+    if (v < end && *v == '+') ++v;
+    double x = 0;
+    auto r = std::from_chars(v, end, x);
+    if (r.ec == std::errc::result_out_of_range || (r.ec == std::errc() && r.ptr == end && !std::isfinite(x)))
+      bad(name, std::string("is not a finite number: \"") + e_->Attribute(name) + "\"");
+    if (r.ec != std::errc() || r.ptr != end || v == end)
+      bad(name, std::string("is not a number: \"") + e_->Attribute(name) + "\"");
+    return x;
+  }
+  unsigned parse_index(const char* name, const char* v) {
+    const char* end = v + std::strlen(v);
+    std::uint32_t x = 0;
+    auto r = std::from_chars(v, end, x);
+    if (r.ec != std::errc() || r.ptr != end || v == end || x == kNone)
+      bad(name, std::string("is not a non-negative integer: \"") + v + "\"");
+    return x;
+  }
+  const Reader& r_;
+  const tinyxml2::XMLElement* e_;
+  std::set<std::string> used_;
+};
+
+void Reader::read_solver(const tinyxml2::XMLElement* e, SolverSettings& s) const {
+  Attributes a(*this, e);
+  s.dt = a.real("dt", s.dt);
+  if (const char* d = a.raw("damping")) {
+    bool found = false;
+    for (Damping k : {Damping::None, Damping::Viscous, Damping::Kinetic})
+      if (std::strcmp(d, damping_name(k)) == 0) s.damping = k, found = true;
+    if (!found) a.bad("damping", std::string("is \"") + d + "\"; expected none, viscous or kinetic");
+  }
+  s.viscous = a.real("viscous", s.viscous);
+  s.geometric_factor = a.real("geometric_factor", s.geometric_factor);
+  s.mass_factor = a.real("mass_factor", s.mass_factor);
+  if (!(s.dt > 0)) a.bad("dt", "must be > 0");
+  if (!(s.viscous >= 0)) a.bad("viscous", "must be >= 0");
+  if (!(s.geometric_factor >= 0)) a.bad("geometric_factor", "must be >= 0");
+  if (!(s.mass_factor >= 1)) a.bad("mass_factor", "must be >= 1");
+  a.done();
+  no_children(e);
+}
+
+ParticleRecord Reader::read_particle(const tinyxml2::XMLElement* e) const {
+  Attributes a(*this, e);
+  ParticleRecord p;
+  p.element = e;
+  p.id = a.index("id");
+  p.x = Vec3(a.real("x"), a.real("y"), a.real("z"));
+  p.v = Vec3(a.real("vx", 0.0), a.real("vy", 0.0), a.real("vz", 0.0));
+  p.load = Vec3(a.real("fx", 0.0), a.real("fy", 0.0), a.real("fz", 0.0));
+  p.lock = a.index("lock", 0);
+  if (p.lock > (kLockTranslation | kLockRotation)) a.bad("lock", "has bits beyond 63 (x y z rx ry rz)");
+  p.passive = a.flag("passive", false);
+  p.point_mass = a.real("point_mass", 0.0);
+  if (!(p.point_mass >= 0)) a.bad("point_mass", "must be >= 0");
+  a.done();
+  no_children(e);
+  return p;
+}
+
+BlockRecord Reader::read_cable(const tinyxml2::XMLElement* e) const {
+  Attributes a(*this, e);
+  BlockRecord b;
+  b.kind = BlockKind::Cable;
+  b.element = e;
+  b.id = a.index("id");
+  unsigned pa = a.index("a"), pb = a.index("b");
+  if (pa == pb) a.bad("b", "is " + std::to_string(pb) + ", the same particle as 'a'");
+  b.section = a.section(false);
+  double rest = a.real("rest_length");
+  if (!(rest > 0)) a.bad("rest_length", "must be > 0");
+  b.nodes = {pa, pb};
+  b.edges.push_back({pa, pb, rest});
+  a.done();
+  no_children(e);
+  return b;
+}
+
+BlockRecord Reader::read_beam(const tinyxml2::XMLElement* e) const {
+  Attributes a(*this, e);
+  BlockRecord b;
+  b.kind = BlockKind::Beam;
+  b.element = e;
+  b.id = a.index("id");
+  b.closed = a.flag("closed", false);
+  b.section = a.section(true);
+  a.done();
+  std::vector<double> rests;
+  std::vector<const tinyxml2::XMLElement*> node_elements;
+  for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    Attributes ca(*this, c);
+    if (std::strcmp(c->Name(), "node") == 0) {
+      b.nodes.push_back(ca.index("p"));
+      node_elements.push_back(c);
+    } else if (std::strcmp(c->Name(), "segment") == 0) {
+      double rest = ca.real("rest");
+      if (!(rest > 0)) ca.bad("rest", "must be > 0");
+      rests.push_back(rest);
+    } else {
+      fail(c, std::string("unknown element <") + c->Name() + "> inside <beam>");
+    }
+    ca.done();
+    no_children(c);
+  }
+  const std::size_t n = b.nodes.size(), need = b.closed ? 3 : 2;
+  if (n < need)
+    fail(e, "a" + std::string(b.closed ? " closed" : "n open") + " beam needs at least " + std::to_string(need) +
+                " <node p> children, got " + std::to_string(n));
+  const std::size_t segments = b.closed ? n : n - 1;
+  if (rests.size() != segments)
+    fail(e, std::to_string(n) + " <node> children need " + std::to_string(segments) + " <segment rest> children, got " +
+                std::to_string(rests.size()));
+  std::set<unsigned> seen;
+  for (std::size_t k = 0; k < n; ++k)
+    if (!seen.insert(b.nodes[k]).second)
+      fail(node_elements[k], "attribute 'p': particle " + std::to_string(b.nodes[k]) + " appears twice in the beam");
+  for (std::size_t k = 0; k < segments; ++k) b.edges.push_back({b.nodes[k], b.nodes[(k + 1) % n], rests[k]});
+  return b;
+}
+
+BlockRecord Reader::read_patch(const tinyxml2::XMLElement* e) const {
+  Attributes a(*this, e);
+  BlockRecord b;
+  b.kind = BlockKind::Patch;
+  b.element = e;
+  b.id = a.index("id");
+  unsigned rows = a.index("rows"), cols = a.index("cols");
+  if (rows < 2 || rows > 1u << 15) a.bad("rows", "must be an integer from 2 to 32768");
+  if (cols < 2 || cols > 1u << 15) a.bad("cols", "must be an integer from 2 to 32768");
+  b.rows = int(rows);
+  b.cols = int(cols);
+  b.section = a.section(false);
+  a.done();
+  std::vector<const tinyxml2::XMLElement*> node_elements, edge_elements;
+  for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    Attributes ca(*this, c);
+    if (std::strcmp(c->Name(), "node") == 0) {
+      b.nodes.push_back(ca.index("p"));
+      node_elements.push_back(c);
+    } else if (std::strcmp(c->Name(), "edge") == 0) {
+      EdgeRecord r{ca.index("a"), ca.index("b"), ca.real("rest")};
+      if (!(r.rest > 0)) ca.bad("rest", "must be > 0");
+      b.edges.push_back(r);
+      edge_elements.push_back(c);
+    } else {
+      fail(c, std::string("unknown element <") + c->Name() + "> inside <patch>");
+    }
+    ca.done();
+    no_children(c);
+  }
+  const std::size_t n = std::size_t(rows) * cols;
+  if (b.nodes.size() != n)
+    fail(e, "attributes 'rows' and 'cols' need " + std::to_string(n) + " <node p> children, got " +
+                std::to_string(b.nodes.size()));
+  std::set<unsigned> seen;
+  for (std::size_t k = 0; k < n; ++k)
+    if (!seen.insert(b.nodes[k]).second)
+      fail(node_elements[k], "attribute 'p': particle " + std::to_string(b.nodes[k]) + " appears twice in the patch");
+  // Every grid edge exactly once, either way round.
+  std::map<std::pair<unsigned, unsigned>, int> expected;  // -> index of its <edge>, -1 until seen
+  auto key = [](unsigned x, unsigned y) { return std::make_pair(std::min(x, y), std::max(x, y)); };
+  for (const QuadGrid::Edge& g : QuadGrid::edges(b.rows, b.cols)) expected[key(b.nodes[g.a], b.nodes[g.b])] = -1;
+  for (std::size_t k = 0; k < b.edges.size(); ++k) {
+    auto it = expected.find(key(b.edges[k].a, b.edges[k].b));
+    if (it == expected.end())
+      fail(edge_elements[k], "attributes 'a' and 'b': particles " + std::to_string(b.edges[k].a) + " and " +
+                                 std::to_string(b.edges[k].b) + " are not neighbours in the grid");
+    if (it->second >= 0)
+      fail(edge_elements[k], "attributes 'a' and 'b': this edge is already given on line " +
+                                 std::to_string(edge_elements[it->second]->GetLineNum()));
+    it->second = int(k);
+  }
+  for (const auto& [pair, k] : expected)
+    if (k < 0)
+      fail(e, "no <edge a b rest> between particles " + std::to_string(pair.first) + " and " +
+                  std::to_string(pair.second));
+  return b;
+}
+
+void Reader::check_references(const Document& d) const {
+  std::map<unsigned, const ParticleRecord*> by_id;
+  for (const ParticleRecord& p : d.particles) by_id[p.id] = &p;
+  for (const BlockRecord& b : d.blocks) {
+    const tinyxml2::XMLElement* e = b.element;
+    // Walk node children (beams, patches) or the a/b attributes (cables).
+    std::vector<std::pair<const tinyxml2::XMLElement*, const char*>> refs;
+    if (b.kind == BlockKind::Cable) {
+      refs = {{e, "a"}, {e, "b"}};
+    } else {
+      for (const tinyxml2::XMLElement* c = e->FirstChildElement("node"); c; c = c->NextSiblingElement("node"))
+        refs.push_back({c, "p"});
+    }
+    for (std::size_t k = 0; k < refs.size(); ++k)
+      if (!by_id.count(b.nodes[k]))
+        fail(refs[k].first, std::string("attribute '") + refs[k].second + "': no particle with id " +
+                                std::to_string(b.nodes[k]));
+    if (b.kind == BlockKind::Beam) {  // add_beam refuses consecutive particles that coincide
+      const std::size_t n = b.nodes.size(), segments = b.closed ? n : n - 1;
+      for (std::size_t k = 0; k < segments; ++k) {
+        unsigned p = b.nodes[k], q = b.nodes[(k + 1) % n];
+        if (by_id[p]->x == by_id[q]->x)
+          fail(refs[(k + 1) % n].first, "attribute 'p': particle " + std::to_string(q) + " sits on particle " +
+                                            std::to_string(p) + ", its neighbour on the beam");
+      }
+    }
+  }
+}
+
+Document Reader::read(const tinyxml2::XMLDocument& doc) const {
+  const tinyxml2::XMLElement* root = doc.RootElement();
+  if (!root) fail("no root element; expected <tendril version=\"1\">");
+  if (std::strcmp(root->Name(), "tendril") != 0)
+    fail(root, "the root element must be <tendril version=\"1\">");
+  Document d;
+  {
+    Attributes a(*this, root);
+    unsigned version = a.index("version");
+    if (version != kVersion)
+      a.bad("version", "is " + std::to_string(version) + "; this build reads version " + std::to_string(kVersion));
+    a.done();
+  }
+  std::map<std::string, const tinyxml2::XMLElement*> sections;
+  std::map<unsigned, const tinyxml2::XMLElement*> particle_ids, block_ids;
+  for (const tinyxml2::XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
+    const std::string name = e->Name();
+    if (name != "solver" && name != "gravity" && name != "particles" && name != "blocks")
+      fail(e, "unknown element <" + name + "> inside <tendril>");
+    if (auto it = sections.find(name); it != sections.end())
+      fail(e, "<" + name + "> is already given on line " + std::to_string(it->second->GetLineNum()));
+    sections[name] = e;
+    if (name == "solver") {
+      read_solver(e, d.settings);
+    } else if (name == "gravity") {
+      Attributes a(*this, e);
+      d.gravity = Vec3(a.real("x"), a.real("y"), a.real("z"));
+      a.done();
+      no_children(e);
+    } else if (name == "particles") {
+      Attributes(*this, e).done();
+      for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+        if (std::strcmp(c->Name(), "particle") != 0)
+          fail(c, std::string("unknown element <") + c->Name() + "> inside <particles>");
+        ParticleRecord p = read_particle(c);
+        if (auto [it, fresh] = particle_ids.emplace(p.id, c); !fresh)
+          fail(c, "attribute 'id': particle " + std::to_string(p.id) + " is already defined on line " +
+                      std::to_string(it->second->GetLineNum()));
+        d.particles.push_back(p);
+      }
+    } else {
+      Attributes(*this, e).done();
+      for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+        const std::string kind = c->Name();
+        BlockRecord b;
+        if (kind == "cable") b = read_cable(c);
+        else if (kind == "beam") b = read_beam(c);
+        else if (kind == "patch") b = read_patch(c);
+        else fail(c, "unknown element <" + kind + "> inside <blocks>");
+        if (auto [it, fresh] = block_ids.emplace(b.id, c); !fresh)
+          fail(c, "attribute 'id': block " + std::to_string(b.id) + " is already defined on line " +
+                      std::to_string(it->second->GetLineNum()));
+        d.blocks.push_back(std::move(b));
+      }
+    }
+  }
+  std::stable_sort(d.particles.begin(), d.particles.end(), [](auto& x, auto& y) { return x.id < y.id; });
+  std::stable_sort(d.blocks.begin(), d.blocks.end(), [](auto& x, auto& y) { return x.id < y.id; });
+  check_references(d);
+  return d;
+}
+
+// --- reading: building -----------------------------------------------------------
+
+void build(const Reader& reader, const Document& d, Model& m) {
+  std::map<unsigned, ParticleId> id_of;
+  for (const ParticleRecord& r : d.particles) {
+    try {
+      ParticleId p = m.add_particle(r.x);
+      m.particles.velocity[p] = r.v;
+      m.set_load(p, r.load);
+      m.set_lock(p, std::uint8_t(r.lock));
+      m.set_passive(p, r.passive);
+      m.set_point_mass(p, r.point_mass);
+      id_of[r.id] = p;
+    } catch (const ModelError& e) {
+      reader.fail(r.element, e.what());
+    }
+  }
+  for (const BlockRecord& r : d.blocks) {
+    try {
+      std::vector<ParticleId> ps;
+      for (unsigned n : r.nodes) ps.push_back(id_of.at(n));
+      BlockId b = 0;
+      switch (r.kind) {
+        case BlockKind::Cable: b = m.add_cable(ps[0], ps[1], r.section, r.edges[0].rest); break;
+        case BlockKind::Beam: b = m.add_beam(ps, r.section, r.closed); break;
+        case BlockKind::Patch: b = m.add_quad_grid(ps, r.rows, r.cols, r.section); break;
+      }
+      // Blocks take rest lengths from the current distances; the stored
+      // ones win. Bars and lumped masses follow in rebuild_elements below.
+      std::map<std::pair<ParticleId, ParticleId>, double> rest;
+      for (const EdgeRecord& e : r.edges) {
+        ParticleId a = id_of.at(e.a), c = id_of.at(e.b);
+        rest[{std::min(a, c), std::max(a, c)}] = e.rest;
+      }
+      for (Dart x : m.map.orbit(kComponentOrbit, m.blocks[b].dart)) {
+        ParticleId a = m.dart_particle[x], c = m.dart_particle[m.map.alpha(0, x)];
+        m.rest_length[x] = rest.at({std::min(a, c), std::max(a, c)});
+      }
+    } catch (const ModelError& e) {
+      reader.fail(r.element, e.what());
+    }
+  }
+  m.rebuild_elements();
+  m.gravity = d.gravity;
+}
+
+void load(const std::string& xml, const std::string& name, Model& m, SolverSettings& s) {
+  if (m.particles.capacity() != 0 || !m.blocks.empty() || m.map.capacity() != 0)
+    throw ModelError("load_model_xml: the target model must be a fresh Model");
+  tinyxml2::XMLDocument doc;
+  doc.Parse(xml.data(), xml.size());
+  if (doc.ErrorID() == tinyxml2::XML_ERROR_EMPTY_DOCUMENT)
+    throw ModelFormatError(name + ": no root element; expected <tendril version=\"1\">");
+  if (doc.Error())
+    throw ModelFormatError(name + ":" + std::to_string(doc.ErrorLineNum()) + ": malformed XML: " + doc.ErrorStr());
+  Reader reader(name);
+  Document d = reader.read(doc);
+  {
+    Model scratch;
+    build(reader, d, scratch);
+    if (std::string c = scratch.check(); !c.empty())
+      reader.fail(doc.RootElement(), "the loaded model is invalid: " + c);
+  }
+  build(reader, d, m);
+  s = d.settings;
+}
+
+}  // namespace
+
+std::string model_xml_string(const Model& m, const SolverSettings& s) { return write_document(m, s); }
+
+void save_model_xml(const Model& m, const SolverSettings& s, const std::string& path) {
+  const std::string text = write_document(m, s);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw ModelError("save_model_xml: cannot open " + path + " for writing");
+  out.write(text.data(), std::streamsize(text.size()));
+  out.close();
+  if (!out) throw ModelError("save_model_xml: writing " + path + " failed");
+}
+
+void load_model_xml_string(const std::string& xml, Model& m, SolverSettings& s, const std::string& name) {
+  load(xml, name, m, s);
+}
+
+void load_model_xml(const std::string& path, Model& m, SolverSettings& s) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ModelError("load_model_xml: cannot open " + path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw ModelError("load_model_xml: reading " + path + " failed");
+  load(text.str(), path, m, s);
+}
+
+}  // namespace tendril

@@ -1,0 +1,52 @@
+#pragma once
+// The model database (thesis 5.4.1.1): a whole model and its solver settings
+// as one XML document, written and read with tinyxml2.
+//
+//   <tendril version="1">
+//     <solver dt damping viscous geometric_factor mass_factor/>
+//     <gravity x y z/>
+//     <particles>
+//       <particle id x y z vx vy vz lock passive point_mass fx fy fz/>
+//     </particles>
+//     <blocks>
+//       <cable id a b EA EI prestress line_mass rest_length/>
+//       <beam id closed EA EI prestress line_mass>
+//         <node p/> <segment rest/> <node p/> ...   (nodes in path order;
+//       </beam>                                      segment k joins node k, k+1)
+//       <patch id rows cols EA EI prestress line_mass>
+//         <node p/> ... rows*cols, row-major      (a quad grid, see add_quad_grid)
+//         <edge a b rest/> ... every grid edge once
+//       </patch>
+//     </blocks>
+//   </tendril>
+//
+// Saving numbers particles and blocks densely (0..n-1) in the order of their
+// live ids and writes every double with 17 significant digits, so save, load,
+// save gives the same bytes. Derived data (bars, hinges, lumped masses,
+// forces) is not stored; loading recomputes it.
+#include <string>
+
+#include "model/model.hpp"
+#include "physics/solver.hpp"
+
+namespace tendril {
+
+// A document that is not a valid model: the message names the file, the line,
+// the element and the attribute at fault.
+struct ModelFormatError : ModelError {
+  using ModelError::ModelError;
+};
+
+// Throws ModelError when the file cannot be written, or when a patch is no
+// longer a quad grid of distinct particles (the only patches the format holds).
+void save_model_xml(const Model& m, const SolverSettings& s, const std::string& path);
+std::string model_xml_string(const Model& m, const SolverSettings& s);
+
+// `m` must be a fresh Model. On any error (ModelFormatError for a bad
+// document, ModelError for an unreadable file) `m` and `s` are unchanged.
+void load_model_xml(const std::string& path, Model& m, SolverSettings& s);
+// Same, from a string; `name` stands for the file in error messages.
+void load_model_xml_string(const std::string& xml, Model& m, SolverSettings& s,
+                           const std::string& name = "<string>");
+
+}  // namespace tendril

@@ -1,0 +1,16 @@
+#pragma once
+// Wavefront OBJ output of the model's geometry: one "v" per live particle
+// (numbered 1..n in the order of live ids), one "l" polyline per cable and
+// beam (a ring repeats its first vertex), one "f" per patch quad, all
+// consistently oriented within a patch. Doubles carry 17 significant digits.
+#include <string>
+
+#include "model/model.hpp"
+
+namespace tendril {
+
+std::string obj_string(const Model& m);
+// Throws ModelError when the file cannot be written.
+void save_obj(const Model& m, const std::string& path);
+
+}  // namespace tendril

@@ -1,0 +1,53 @@
+#pragma once
+// Argument helpers for the Lua bindings. They throw LuaArgError instead of
+// calling lua_error, so no longjmp crosses C++ frames; the guard turns the
+// exception into a Lua error at the binding's boundary.
+#include <lua.hpp>
+
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "model/types.hpp"
+
+namespace tendril::lua {
+
+struct LuaArgError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void arg_error(const char* fn, int arg, const std::string& msg);
+[[noreturn]] void key_error(const char* fn, const char* key, const std::string& msg);
+
+double check_number(lua_State* L, int idx, const char* fn);
+std::int64_t check_integer(lua_State* L, int idx, const char* fn);
+Vec3 check_vec3(lua_State* L, int idx, const char* fn);
+void check_table(lua_State* L, int idx, const char* fn);
+// Throws when the option table at idx has a key outside `allowed`.
+void check_keys(lua_State* L, int idx, const char* fn, std::initializer_list<const char*> allowed);
+// Field accessors on the option table at idx; `has_field` pushes nothing.
+bool has_field(lua_State* L, int idx, const char* key);
+double field_number(lua_State* L, int idx, const char* key, const char* fn, double fallback);
+bool field_bool(lua_State* L, int idx, const char* key, const char* fn, bool fallback);
+std::string field_string(lua_State* L, int idx, const char* key, const char* fn, const std::string& fallback);
+Vec3 field_vec3(lua_State* L, int idx, const char* key, const char* fn);
+void push_vec3(lua_State* L, const Vec3& v);
+
+// Wraps a binding so that C++ exceptions become Lua errors with the caller's
+// file and line.
+template <lua_CFunction F>
+int guarded(lua_State* L) {
+  std::string message;
+  try {
+    return F(L);
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  luaL_where(L, 1);
+  lua_pushstring(L, message.c_str());
+  lua_concat(L, 2);
+  return lua_error(L);
+}
+
+}  // namespace tendril::lua

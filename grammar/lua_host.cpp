@@ -1,0 +1,50 @@
+#include "lua_host.hpp"
+
+#include <lua.hpp>
+
+#include <cstdio>
+#include <memory>
+
+#include "lua_model.hpp"
+
+namespace tendril {
+
+namespace {
+int traceback(lua_State* L) {
+  const char* msg = lua_tostring(L, 1);
+  if (!msg) msg = luaL_tolstring(L, 1, nullptr);
+  luaL_traceback(L, L, msg, 1);
+  return 1;
+}
+}  // namespace
+
+int run_scene(const std::string& path, const SceneOptions& options) {
+  std::unique_ptr<lua_State, decltype(&lua_close)> state(luaL_newstate(), &lua_close);
+  lua_State* L = state.get();
+  if (!L) {
+    std::fprintf(stderr, "tendril: cannot create a Lua state\n");
+    return 1;
+  }
+  luaL_openlibs(L);
+  // Deterministic: the scene's random numbers depend on --seed only.
+  lua_getglobal(L, "math");
+  lua_getfield(L, -1, "randomseed");
+  lua_pushinteger(L, options.seed);
+  lua_call(L, 1, 0);
+  lua_pop(L, 1);
+  lua::open_tendril(L, options);
+  lua_setglobal(L, "tendril");
+
+  lua_pushcfunction(L, traceback);
+  if (luaL_loadfile(L, path.c_str()) != LUA_OK) {
+    std::fprintf(stderr, "tendril: error: %s\n", lua_tostring(L, -1));
+    return 1;
+  }
+  if (lua_pcall(L, 0, 0, -2) != LUA_OK) {
+    std::fprintf(stderr, "tendril: error: %s\n", lua_tostring(L, -1));
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace tendril

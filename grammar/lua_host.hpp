@@ -1,0 +1,19 @@
+#pragma once
+// Runs scenes in real Lua 5.4 with the `tendril` module (docs/lua-api.md).
+#include <cstdint>
+#include <string>
+
+namespace tendril {
+
+struct SceneOptions {
+  std::string out_dir = "out";        // tendril.out(name) resolves here
+  std::int64_t max_steps = -1;        // caps every run{}; -1: no cap
+  std::int64_t seed = 1;              // math.randomseed and tendril.seed
+  bool progress = true;               // progress lines on stderr for long runs
+};
+
+// Runs the scene file. Returns 0 on success; on a Lua error prints the
+// message (file:line) and a traceback to stderr and returns 1.
+int run_scene(const std::string& path, const SceneOptions& options);
+
+}  // namespace tendril

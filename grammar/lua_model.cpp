@@ -1,0 +1,773 @@
+// Lua bindings of the model. A model userdata owns a Model and its Solver;
+// particle and block handles carry (id, generation) so a handle to something
+// deleted is refused with a clear error instead of aliasing a recycled slot.
+#include "lua_model.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "io/model_xml.hpp"
+#include "io/obj.hpp"
+#include "lua_args.hpp"
+#include "model/model.hpp"
+#include "physics/solver.hpp"
+
+namespace tendril::lua {
+
+namespace {
+
+const char* const kModelMeta = "tendril.Model";
+const char* const kParticleMeta = "tendril.Particle";
+const char* const kBlockMeta = "tendril.Block";
+
+struct Scene {
+  Model model;
+  Solver solver{model};
+  const SceneOptions* options = nullptr;
+};
+
+struct Handle {
+  Scene* scene;
+  std::uint32_t id;
+  std::uint32_t generation;
+};
+
+const SceneOptions* g_options = nullptr;  // set by open_tendril for the host's lifetime
+
+Scene& check_scene(lua_State* L, const char* fn) {
+  auto* s = static_cast<Scene**>(luaL_testudata(L, 1, kModelMeta));
+  if (!s || !*s) arg_error(fn, 1, "expected a model (call it as m:" + std::string(fn) + "(...))");
+  return **s;
+}
+
+ParticleId check_particle(lua_State* L, int idx, Scene& scene, const char* fn) {
+  auto* h = static_cast<Handle*>(luaL_testudata(L, idx, kParticleMeta));
+  if (!h) arg_error(fn, idx, std::string("expected a particle, got ") + luaL_typename(L, idx));
+  if (h->scene != &scene) arg_error(fn, idx, "the particle belongs to another model");
+  const Particles& P = scene.model.particles;
+  if (!P.valid(h->id) || P.generation[h->id] != h->generation)
+    arg_error(fn, idx, "particle " + std::to_string(h->id) + " was deleted");
+  return h->id;
+}
+
+BlockId check_block(lua_State* L, int idx, Scene& scene, const char* fn) {
+  auto* h = static_cast<Handle*>(luaL_testudata(L, idx, kBlockMeta));
+  if (!h) arg_error(fn, idx, std::string("expected a block, got ") + luaL_typename(L, idx));
+  if (h->scene != &scene) arg_error(fn, idx, "the block belongs to another model");
+  if (!scene.model.block_valid(h->id) || scene.model.blocks[h->id].generation != h->generation)
+    arg_error(fn, idx, "block " + std::to_string(h->id) + " was deleted");
+  return h->id;
+}
+
+void push_handle(lua_State* L, int model_idx, const char* meta, Scene& scene, std::uint32_t id, std::uint32_t gen) {
+  model_idx = lua_absindex(L, model_idx);
+  auto* h = static_cast<Handle*>(lua_newuserdatauv(L, sizeof(Handle), 1));
+  *h = Handle{&scene, id, gen};
+  luaL_setmetatable(L, meta);
+  lua_pushvalue(L, model_idx);  // keeps the model alive while the handle lives
+  lua_setiuservalue(L, -2, 1);
+}
+
+void push_particle(lua_State* L, Scene& s, ParticleId p) {
+  push_handle(L, 1, kParticleMeta, s, p, s.model.particles.generation[p]);
+}
+
+void push_block(lua_State* L, Scene& s, BlockId b) {
+  push_handle(L, 1, kBlockMeta, s, b, s.model.blocks[b].generation);
+}
+
+std::vector<ParticleId> check_particle_list(lua_State* L, int idx, Scene& s, const char* fn) {
+  idx = lua_absindex(L, idx);
+  check_table(L, idx, fn);
+  std::vector<ParticleId> out;
+  const lua_Integer n = lua_rawlen(L, idx);
+  for (lua_Integer k = 1; k <= n; ++k) {
+    lua_rawgeti(L, idx, k);
+    auto* h = static_cast<Handle*>(luaL_testudata(L, -1, kParticleMeta));
+    lua_pop(L, 1);
+    if (!h) arg_error(fn, int(idx), "entry " + std::to_string(k) + " is not a particle");
+    lua_rawgeti(L, idx, k);
+    try {
+      out.push_back(check_particle(L, lua_gettop(L), s, fn));
+    } catch (...) {
+      lua_pop(L, 1);
+      throw;
+    }
+    lua_pop(L, 1);
+  }
+  return out;
+}
+
+// Section from {EA=, EI=} or {E=, A=, I=}, plus prestress and line_mass.
+Section read_section(lua_State* L, int idx, const char* fn, bool beam) {
+  Section s;
+  const bool by_products = has_field(L, idx, "EA") || has_field(L, idx, "EI");
+  const bool by_modulus = has_field(L, idx, "E");
+  if (by_products && by_modulus) throw LuaArgError(std::string(fn) + ": give EA/EI or E with A/I, not both");
+  if (by_modulus) {
+    const double E = field_number(L, idx, "E", fn, 0);
+    if (!has_field(L, idx, "A")) key_error(fn, "A", "is required with E");
+    s.EA = E * field_number(L, idx, "A", fn, 0);
+    if (beam) {
+      if (!has_field(L, idx, "I")) key_error(fn, "I", "is required with E for a beam");
+      s.EI = E * field_number(L, idx, "I", fn, 0);
+    }
+  } else {
+    if (!has_field(L, idx, "EA")) key_error(fn, "EA", "is required (or E with A)");
+    s.EA = field_number(L, idx, "EA", fn, 0);
+    if (beam) {
+      if (!has_field(L, idx, "EI")) key_error(fn, "EI", "is required for a beam (or E with I)");
+      s.EI = field_number(L, idx, "EI", fn, 0);
+    }
+  }
+  s.prestress = field_number(L, idx, "prestress", fn, 0);
+  s.line_mass = field_number(L, idx, "line_mass", fn, 0);
+  return s;
+}
+
+std::uint8_t parse_axes(const std::string& axes, const char* fn) {
+  if (axes == "all") return kLockTranslation;
+  if (axes == "full") return kLockTranslation | kLockRotation;
+  std::uint8_t bits = 0;
+  bool rotation = false;
+  for (char c : axes) {
+    switch (c) {
+      case 'r': rotation = true; break;
+      case ' ': case ',': rotation = false; break;
+      case 'x': bits |= rotation ? kLockRX : kLockX; break;
+      case 'y': bits |= rotation ? kLockRY : kLockY; break;
+      case 'z': bits |= rotation ? kLockRZ : kLockZ; break;
+      default:
+        throw LuaArgError(std::string(fn) + ": axes '" + axes + "' must use x, y, z (translation) and r before rotations, e.g. \"xyz\", \"z\", \"xyz rxyz\", \"all\", \"full\"");
+    }
+  }
+  return bits;
+}
+
+std::string axes_string(std::uint8_t bits) {
+  std::string s;
+  for (int k = 0; k < 3; ++k)
+    if (bits & (1 << k)) s += char('x' + k);
+  if (bits & kLockRotation) {
+    s += s.empty() ? "r" : " r";
+    for (int k = 0; k < 3; ++k)
+      if (bits & (8 << k)) s += char('x' + k);
+  }
+  return s;
+}
+
+Damping parse_damping(const std::string& name, const char* fn) {
+  if (name == "kinetic") return Damping::Kinetic;
+  if (name == "viscous") return Damping::Viscous;
+  if (name == "none") return Damping::None;
+  throw LuaArgError(std::string(fn) + ": damping must be \"kinetic\", \"viscous\" or \"none\", got \"" + name + "\"");
+}
+
+void apply_settings(lua_State* L, int idx, Scene& s, const char* fn) {
+  SolverSettings& st = s.solver.settings;
+  st.dt = field_number(L, idx, "dt", fn, st.dt);
+  if (!(st.dt > 0)) key_error(fn, "dt", "must be > 0");
+  st.damping = parse_damping(field_string(L, idx, "damping", fn, damping_name(st.damping)), fn);
+  st.viscous = field_number(L, idx, "viscous", fn, st.viscous);
+  if (!(st.viscous >= 0 && st.viscous < 2)) key_error(fn, "viscous", "must be in [0, 2)");
+  st.geometric_factor = field_number(L, idx, "geometric_factor", fn, st.geometric_factor);
+  st.mass_factor = field_number(L, idx, "mass_factor", fn, st.mass_factor);
+  if (!(st.mass_factor >= 1)) key_error(fn, "mass_factor", "must be >= 1");
+  if (has_field(L, idx, "gravity")) s.model.gravity = field_vec3(L, idx, "gravity", fn);
+}
+
+Scene& push_new_scene(lua_State* L) {
+  auto** slot = static_cast<Scene**>(lua_newuserdatauv(L, sizeof(Scene*), 0));
+  *slot = nullptr;
+  luaL_setmetatable(L, kModelMeta);
+  *slot = new Scene();
+  (*slot)->options = g_options;
+  return **slot;
+}
+
+// --- tendril.* ------------------------------------------------------------------
+
+int l_new_model(lua_State* L) {
+  const char* fn = "tendril.model";
+  const bool has_options = !lua_isnoneornil(L, 1);
+  if (has_options) {
+    check_table(L, 1, fn);
+    check_keys(L, 1, fn, {"dt", "damping", "viscous", "geometric_factor", "mass_factor", "gravity"});
+  }
+  Scene& s = push_new_scene(L);
+  if (has_options) apply_settings(L, 1, s, fn);
+  return 1;
+}
+
+int l_load(lua_State* L) {
+  const char* fn = "tendril.load";
+  if (lua_type(L, 1) != LUA_TSTRING) arg_error(fn, 1, "expected a file name");
+  std::string path = lua_tostring(L, 1);
+  Scene& s = push_new_scene(L);
+  load_model_xml(path, s.model, s.solver.settings);
+  return 1;
+}
+
+int l_out(lua_State* L) {
+  const char* fn = "tendril.out";
+  if (lua_type(L, 1) != LUA_TSTRING) arg_error(fn, 1, "expected a file name");
+  std::filesystem::path dir(g_options->out_dir);
+  std::filesystem::create_directories(dir);
+  std::string path = (dir / lua_tostring(L, 1)).string();
+  lua_pushstring(L, path.c_str());
+  return 1;
+}
+
+// --- model methods ---------------------------------------------------------------
+
+int l_gc(lua_State* L) {
+  auto** slot = static_cast<Scene**>(luaL_checkudata(L, 1, kModelMeta));
+  delete *slot;
+  *slot = nullptr;
+  return 0;
+}
+
+int l_particle(lua_State* L) {
+  Scene& s = check_scene(L, "particle");
+  Vec3 x = check_vec3(L, 2, "particle");
+  push_particle(L, s, s.model.add_particle(x));
+  return 1;
+}
+
+int l_cable(lua_State* L) {
+  const char* fn = "cable";
+  Scene& s = check_scene(L, fn);
+  ParticleId a = check_particle(L, 2, s, fn), b = check_particle(L, 3, s, fn);
+  check_table(L, 4, fn);
+  check_keys(L, 4, fn, {"EA", "E", "A", "prestress", "line_mass", "rest_length"});
+  Section sec = read_section(L, 4, fn, false);
+  double rest = field_number(L, 4, "rest_length", fn, 0);
+  if (has_field(L, 4, "rest_length") && !(rest > 0)) key_error(fn, "rest_length", "must be > 0");
+  push_block(L, s, s.model.add_cable(a, b, sec, rest));
+  return 1;
+}
+
+int l_beam(lua_State* L) {
+  const char* fn = "beam";
+  Scene& s = check_scene(L, fn);
+  check_table(L, 2, fn);
+  check_keys(L, 2, fn, {"points", "particles", "from", "direction", "segments", "closed", "EA", "EI", "E", "A", "I", "prestress", "line_mass"});
+  Section sec = read_section(L, 2, fn, true);
+  const bool closed = field_bool(L, 2, "closed", fn, false);
+  const int ways = has_field(L, 2, "points") + has_field(L, 2, "particles") + has_field(L, 2, "from");
+  if (ways != 1) throw LuaArgError("beam: give exactly one of 'points', 'particles' or 'from' (with 'direction' and 'segments')");
+  BlockId b;
+  if (has_field(L, 2, "from")) {
+    if (closed) key_error(fn, "closed", "is not available with 'from'");
+    lua_getfield(L, 2, "from");
+    ParticleId start;
+    try {
+      start = check_particle(L, lua_gettop(L), s, fn);
+    } catch (...) {
+      lua_pop(L, 1);
+      throw;
+    }
+    lua_pop(L, 1);
+    Vec3 dir = field_vec3(L, 2, "direction", fn);
+    if (!has_field(L, 2, "segments")) key_error(fn, "segments", "is required with 'from'");
+    double seg = field_number(L, 2, "segments", fn, 0);
+    if (seg != std::floor(seg) || seg < 1) key_error(fn, "segments", "must be an integer >= 1");
+    b = s.model.add_beam_from(start, dir, int(seg), sec);
+  } else if (has_field(L, 2, "particles")) {
+    lua_getfield(L, 2, "particles");
+    std::vector<ParticleId> ps;
+    try {
+      ps = check_particle_list(L, lua_gettop(L), s, fn);
+    } catch (...) {
+      lua_pop(L, 1);
+      throw;
+    }
+    lua_pop(L, 1);
+    b = s.model.add_beam(ps, sec, closed);
+  } else {
+    lua_getfield(L, 2, "points");
+    const int t = lua_gettop(L);
+    if (!lua_istable(L, t)) {
+      lua_pop(L, 1);
+      key_error(fn, "points", "must be a list of {x, y, z}");
+    }
+    std::vector<Vec3> pts;
+    for (lua_Integer k = 1; k <= lua_Integer(lua_rawlen(L, t)); ++k) {
+      lua_rawgeti(L, t, k);
+      try {
+        pts.push_back(check_vec3(L, lua_gettop(L), fn));
+      } catch (...) {
+        lua_pop(L, 2);
+        throw LuaArgError("beam: points[" + std::to_string(k) + "] must be {x, y, z}");
+      }
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    if (pts.size() < (closed ? 3u : 2u)) key_error(fn, "points", closed ? "needs at least 3 points for a ring" : "needs at least 2 points");
+    // Validate before creating particles so a refused beam leaves nothing behind.
+    if (sec.EA <= 0 || sec.EI <= 0) throw LuaArgError("beam: EA and EI must be > 0");
+    std::vector<ParticleId> ps;
+    for (const Vec3& x : pts) ps.push_back(s.model.add_particle(x));
+    try {
+      b = s.model.add_beam(ps, sec, closed);
+    } catch (...) {
+      for (ParticleId p : ps) s.model.delete_particle(p);
+      throw;
+    }
+  }
+  push_block(L, s, b);
+  return 1;
+}
+
+int l_quad_grid(lua_State* L) {
+  const char* fn = "quad_grid";
+  Scene& s = check_scene(L, fn);
+  check_table(L, 2, fn);
+  check_keys(L, 2, fn, {"particles", "rows", "cols", "EA", "E", "A", "prestress", "line_mass"});
+  Section sec = read_section(L, 2, fn, false);
+  const double rows = field_number(L, 2, "rows", fn, 0), cols = field_number(L, 2, "cols", fn, 0);
+  lua_getfield(L, 2, "particles");
+  std::vector<ParticleId> ps;
+  try {
+    ps = check_particle_list(L, lua_gettop(L), s, fn);
+  } catch (...) {
+    lua_pop(L, 1);
+    throw;
+  }
+  lua_pop(L, 1);
+  push_block(L, s, s.model.add_quad_grid(ps, int(rows), int(cols), sec));
+  return 1;
+}
+
+int l_delete_particle(lua_State* L) {
+  Scene& s = check_scene(L, "delete_particle");
+  s.model.delete_particle(check_particle(L, 2, s, "delete_particle"));
+  return 0;
+}
+
+int l_merge(lua_State* L) {
+  Scene& s = check_scene(L, "merge");
+  push_particle(L, s, s.model.merge(check_particle_list(L, 2, s, "merge")));
+  return 1;
+}
+
+int l_explode(lua_State* L) {
+  Scene& s = check_scene(L, "explode");
+  std::vector<ParticleId> out = s.model.explode(check_particle(L, 2, s, "explode"));
+  lua_createtable(L, int(out.size()), 0);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    push_particle(L, s, out[k]);
+    lua_rawseti(L, -2, lua_Integer(k + 1));
+  }
+  return 1;
+}
+
+int l_explode_from(lua_State* L) {
+  Scene& s = check_scene(L, "explode_from");
+  ParticleId p = check_particle(L, 2, s, "explode_from");
+  BlockId b = check_block(L, 3, s, "explode_from");
+  push_particle(L, s, s.model.explode_from(p, b));
+  return 1;
+}
+
+int l_delete(lua_State* L) {
+  Scene& s = check_scene(L, "delete");
+  BlockId b = check_block(L, 2, s, "delete");
+  switch (s.model.blocks[b].kind) {
+    case BlockKind::Cable: s.model.delete_cable(b); break;
+    case BlockKind::Beam: s.model.delete_beam(b); break;
+    case BlockKind::Patch: throw LuaArgError("delete: deleting patches comes with the meshing layer (rule 27)");
+  }
+  return 0;
+}
+
+int l_insert(lua_State* L) {
+  Scene& s = check_scene(L, "insert");
+  ParticleId a = check_particle(L, 2, s, "insert"), b = check_particle(L, 3, s, "insert");
+  push_particle(L, s, s.model.insert_particle(a, b));
+  return 1;
+}
+
+int l_remove_from_beam(lua_State* L) {
+  Scene& s = check_scene(L, "remove_from_beam");
+  s.model.remove_from_beam(check_particle(L, 2, s, "remove_from_beam"));
+  return 0;
+}
+
+int l_lock(lua_State* L) {
+  Scene& s = check_scene(L, "lock");
+  ParticleId p = check_particle(L, 2, s, "lock");
+  std::string axes = lua_isnoneornil(L, 3) ? "all" : "";
+  if (axes.empty()) {
+    if (lua_type(L, 3) != LUA_TSTRING) arg_error("lock", 3, "expected axes such as \"xyz\"");
+    axes = lua_tostring(L, 3);
+  }
+  s.model.set_lock(p, s.model.particles.lock[p] | parse_axes(axes, "lock"));
+  return 0;
+}
+
+int l_unlock(lua_State* L) {
+  Scene& s = check_scene(L, "unlock");
+  ParticleId p = check_particle(L, 2, s, "unlock");
+  std::uint8_t bits = kLockTranslation | kLockRotation;
+  if (!lua_isnoneornil(L, 3)) {
+    if (lua_type(L, 3) != LUA_TSTRING) arg_error("unlock", 3, "expected axes such as \"xyz\"");
+    bits = parse_axes(lua_tostring(L, 3), "unlock");
+  }
+  s.model.set_lock(p, s.model.particles.lock[p] & ~bits);
+  return 0;
+}
+
+int l_locks(lua_State* L) {
+  Scene& s = check_scene(L, "locks");
+  lua_pushstring(L, axes_string(s.model.particles.lock[check_particle(L, 2, s, "locks")]).c_str());
+  return 1;
+}
+
+int l_load_force(lua_State* L) {
+  Scene& s = check_scene(L, "load");
+  ParticleId p = check_particle(L, 2, s, "load");
+  s.model.set_load(p, check_vec3(L, 3, "load"));
+  return 0;
+}
+
+int l_mass(lua_State* L) {
+  Scene& s = check_scene(L, "mass");
+  ParticleId p = check_particle(L, 2, s, "mass");
+  if (lua_isnoneornil(L, 3)) {
+    lua_pushnumber(L, s.model.particles.mass(p));
+    return 1;
+  }
+  s.model.set_point_mass(p, check_number(L, 3, "mass"));
+  return 0;
+}
+
+int l_passive(lua_State* L) {
+  Scene& s = check_scene(L, "passive");
+  ParticleId p = check_particle(L, 2, s, "passive");
+  if (!lua_isboolean(L, 3)) arg_error("passive", 3, "expected true or false");
+  s.model.set_passive(p, lua_toboolean(L, 3));
+  return 0;
+}
+
+int l_gravity(lua_State* L) {
+  Scene& s = check_scene(L, "gravity");
+  if (lua_isnoneornil(L, 2)) {
+    push_vec3(L, s.model.gravity);
+    return 1;
+  }
+  s.model.gravity = check_vec3(L, 2, "gravity");
+  return 0;
+}
+
+int l_settings(lua_State* L) {
+  const char* fn = "settings";
+  Scene& s = check_scene(L, fn);
+  if (!lua_isnoneornil(L, 2)) {
+    check_table(L, 2, fn);
+    check_keys(L, 2, fn, {"dt", "damping", "viscous", "geometric_factor", "mass_factor", "gravity"});
+    apply_settings(L, 2, s, fn);
+  }
+  const SolverSettings& st = s.solver.settings;
+  lua_createtable(L, 0, 6);
+  lua_pushnumber(L, st.dt);
+  lua_setfield(L, -2, "dt");
+  lua_pushstring(L, damping_name(st.damping));
+  lua_setfield(L, -2, "damping");
+  lua_pushnumber(L, st.viscous);
+  lua_setfield(L, -2, "viscous");
+  lua_pushnumber(L, st.geometric_factor);
+  lua_setfield(L, -2, "geometric_factor");
+  lua_pushnumber(L, st.mass_factor);
+  lua_setfield(L, -2, "mass_factor");
+  push_vec3(L, s.model.gravity);
+  lua_setfield(L, -2, "gravity");
+  return 1;
+}
+
+void push_run_result(lua_State* L, const RunResult& r) {
+  lua_createtable(L, 0, 3);
+  lua_pushinteger(L, lua_Integer(r.steps));
+  lua_setfield(L, -2, "steps");
+  lua_pushnumber(L, r.residual);
+  lua_setfield(L, -2, "residual");
+  lua_pushboolean(L, r.converged);
+  lua_setfield(L, -2, "converged");
+}
+
+int l_run(lua_State* L) {
+  const char* fn = "run";
+  Scene& s = check_scene(L, fn);
+  double tolerance = 1e-3;
+  double max_steps = 100000;
+  if (!lua_isnoneornil(L, 2)) {
+    check_table(L, 2, fn);
+    check_keys(L, 2, fn, {"tolerance", "max_steps"});
+    tolerance = field_number(L, 2, "tolerance", fn, tolerance);
+    max_steps = field_number(L, 2, "max_steps", fn, max_steps);
+  }
+  if (!(tolerance > 0)) key_error(fn, "tolerance", "must be > 0");
+  if (!(max_steps >= 0) || max_steps != std::floor(max_steps)) key_error(fn, "max_steps", "must be an integer >= 0");
+  auto cap = std::uint64_t(max_steps);
+  if (s.options->max_steps >= 0) cap = std::min<std::uint64_t>(cap, std::uint64_t(s.options->max_steps));
+  const auto start = std::chrono::steady_clock::now();
+  auto last = start;
+  auto progress = [&](const RunResult& r) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!s.options->progress || now - last < std::chrono::seconds(1)) return;
+    last = now;
+    std::fprintf(stderr, "[tendril] step %llu (this run %llu)  residual %.3e N  particles %zu  %.1f s\n",
+                 static_cast<unsigned long long>(s.solver.steps()), static_cast<unsigned long long>(r.steps),
+                 r.residual, s.model.particle_count(), std::chrono::duration<double>(now - start).count());
+  };
+  push_run_result(L, s.solver.run(tolerance, cap, progress, 1000));
+  return 1;
+}
+
+int l_step(lua_State* L) {
+  Scene& s = check_scene(L, "step");
+  std::int64_t n = lua_isnoneornil(L, 2) ? 1 : check_integer(L, 2, "step");
+  if (n < 0) arg_error("step", 2, "must be >= 0");
+  if (s.options->max_steps >= 0) n = std::min(n, s.options->max_steps);
+  for (std::int64_t k = 0; k < n; ++k) s.solver.step();
+  lua_pushnumber(L, s.solver.residual());
+  return 1;
+}
+
+int l_position(lua_State* L) {
+  Scene& s = check_scene(L, "position");
+  push_vec3(L, s.model.particles.position[check_particle(L, 2, s, "position")]);
+  return 1;
+}
+
+int l_set_position(lua_State* L) {
+  Scene& s = check_scene(L, "set_position");
+  ParticleId p = check_particle(L, 2, s, "set_position");
+  s.model.particles.position[p] = check_vec3(L, 3, "set_position");
+  return 0;
+}
+
+int l_velocity(lua_State* L) {
+  Scene& s = check_scene(L, "velocity");
+  push_vec3(L, s.model.particles.velocity[check_particle(L, 2, s, "velocity")]);
+  return 1;
+}
+
+int l_reaction(lua_State* L) {
+  Scene& s = check_scene(L, "reaction");
+  push_vec3(L, s.solver.reaction(check_particle(L, 2, s, "reaction")));
+  return 1;
+}
+
+int l_state(lua_State* L) {
+  Scene& s = check_scene(L, "state");
+  lua_pushstring(L, state_name(s.model.state(check_particle(L, 2, s, "state"))));
+  return 1;
+}
+
+int l_blocks(lua_State* L) {
+  Scene& s = check_scene(L, "blocks");
+  std::vector<BlockId> bs;
+  if (lua_isnoneornil(L, 2)) bs = s.model.live_blocks();
+  else bs = s.model.blocks_of(check_particle(L, 2, s, "blocks"));
+  lua_createtable(L, int(bs.size()), 0);
+  for (std::size_t k = 0; k < bs.size(); ++k) {
+    push_block(L, s, bs[k]);
+    lua_rawseti(L, -2, lua_Integer(k + 1));
+  }
+  return 1;
+}
+
+int l_particles(lua_State* L) {
+  Scene& s = check_scene(L, "particles");
+  std::vector<ParticleId> ps;
+  if (lua_isnoneornil(L, 2)) {
+    for (ParticleId p = 0; p < s.model.particles.capacity(); ++p)
+      if (s.model.particles.valid(p)) ps.push_back(p);
+  } else {
+    ps = s.model.particles_of(check_block(L, 2, s, "particles"));
+  }
+  lua_createtable(L, int(ps.size()), 0);
+  for (std::size_t k = 0; k < ps.size(); ++k) {
+    push_particle(L, s, ps[k]);
+    lua_rawseti(L, -2, lua_Integer(k + 1));
+  }
+  return 1;
+}
+
+int l_kind(lua_State* L) {
+  Scene& s = check_scene(L, "kind");
+  lua_pushstring(L, block_kind_name(s.model.blocks[check_block(L, 2, s, "kind")].kind));
+  return 1;
+}
+
+int l_count(lua_State* L) {
+  Scene& s = check_scene(L, "count");
+  const Model& m = s.model;
+  lua_createtable(L, 0, 8);
+  auto set = [&](const char* k, std::size_t v) {
+    lua_pushinteger(L, lua_Integer(v));
+    lua_setfield(L, -2, k);
+  };
+  set("particles", m.particle_count());
+  set("blocks", m.block_count());
+  set("cables", m.block_count(BlockKind::Cable));
+  set("beams", m.block_count(BlockKind::Beam));
+  set("patches", m.block_count(BlockKind::Patch));
+  set("darts", m.map.dart_count());
+  set("bars", m.bars.size());
+  set("hinges", m.hinges.size());
+  return 1;
+}
+
+int l_residual(lua_State* L) {
+  Scene& s = check_scene(L, "residual");
+  lua_pushnumber(L, s.solver.residual());
+  return 1;
+}
+
+int l_steps(lua_State* L) {
+  Scene& s = check_scene(L, "steps");
+  lua_pushinteger(L, lua_Integer(s.solver.steps()));
+  return 1;
+}
+
+int l_time(lua_State* L) {
+  Scene& s = check_scene(L, "time");
+  lua_pushnumber(L, s.solver.time());
+  return 1;
+}
+
+int l_check(lua_State* L) {
+  Scene& s = check_scene(L, "check");
+  std::string err = s.model.check();
+  if (!err.empty()) throw ModelError("check: the model is invalid: " + err);
+  lua_pushboolean(L, 1);
+  return 1;
+}
+
+int l_save(lua_State* L) {
+  Scene& s = check_scene(L, "save");
+  if (lua_type(L, 2) != LUA_TSTRING) arg_error("save", 2, "expected a file name");
+  save_model_xml(s.model, s.solver.settings, lua_tostring(L, 2));
+  return 0;
+}
+
+int l_save_obj(lua_State* L) {
+  Scene& s = check_scene(L, "save_obj");
+  if (lua_type(L, 2) != LUA_TSTRING) arg_error("save_obj", 2, "expected a file name");
+  save_obj(s.model, lua_tostring(L, 2));
+  return 0;
+}
+
+// --- handles -----------------------------------------------------------------------
+
+int l_handle_index(lua_State* L) {
+  auto* h = static_cast<Handle*>(lua_touserdata(L, 1));
+  const char* key = lua_tostring(L, 2);
+  if (key && std::string(key) == "id") {
+    lua_pushinteger(L, h->id);
+    return 1;
+  }
+  lua_pushnil(L);
+  return 1;
+}
+
+int l_handle_eq(lua_State* L) {
+  auto* a = static_cast<Handle*>(lua_touserdata(L, 1));
+  auto* b = static_cast<Handle*>(lua_touserdata(L, 2));
+  lua_pushboolean(L, a && b && a->scene == b->scene && a->id == b->id && a->generation == b->generation);
+  return 1;
+}
+
+int l_particle_tostring(lua_State* L) {
+  auto* h = static_cast<Handle*>(lua_touserdata(L, 1));
+  lua_pushfstring(L, "particle %d", int(h->id));
+  return 1;
+}
+
+int l_block_tostring(lua_State* L) {
+  auto* h = static_cast<Handle*>(lua_touserdata(L, 1));
+  lua_pushfstring(L, "block %d", int(h->id));
+  return 1;
+}
+
+template <lua_CFunction F>
+void set_fn(lua_State* L, const char* name) {
+  lua_pushcfunction(L, guarded<F>);
+  lua_setfield(L, -2, name);
+}
+
+void register_model_meta(lua_State* L) {
+  luaL_newmetatable(L, kModelMeta);
+  lua_pushcfunction(L, l_gc);
+  lua_setfield(L, -2, "__gc");
+  lua_newtable(L);  // methods
+  set_fn<l_particle>(L, "particle");
+  set_fn<l_cable>(L, "cable");
+  set_fn<l_beam>(L, "beam");
+  set_fn<l_quad_grid>(L, "quad_grid");
+  set_fn<l_delete_particle>(L, "delete_particle");
+  set_fn<l_merge>(L, "merge");
+  set_fn<l_explode>(L, "explode");
+  set_fn<l_explode_from>(L, "explode_from");
+  set_fn<l_delete>(L, "delete");
+  set_fn<l_insert>(L, "insert");
+  set_fn<l_remove_from_beam>(L, "remove_from_beam");
+  set_fn<l_lock>(L, "lock");
+  set_fn<l_unlock>(L, "unlock");
+  set_fn<l_locks>(L, "locks");
+  set_fn<l_load_force>(L, "load");
+  set_fn<l_mass>(L, "mass");
+  set_fn<l_passive>(L, "passive");
+  set_fn<l_gravity>(L, "gravity");
+  set_fn<l_settings>(L, "settings");
+  set_fn<l_run>(L, "run");
+  set_fn<l_step>(L, "step");
+  set_fn<l_position>(L, "position");
+  set_fn<l_set_position>(L, "set_position");
+  set_fn<l_velocity>(L, "velocity");
+  set_fn<l_reaction>(L, "reaction");
+  set_fn<l_state>(L, "state");
+  set_fn<l_blocks>(L, "blocks");
+  set_fn<l_particles>(L, "particles");
+  set_fn<l_kind>(L, "kind");
+  set_fn<l_count>(L, "count");
+  set_fn<l_residual>(L, "residual");
+  set_fn<l_steps>(L, "steps");
+  set_fn<l_time>(L, "time");
+  set_fn<l_check>(L, "check");
+  set_fn<l_save>(L, "save");
+  set_fn<l_save_obj>(L, "save_obj");
+  lua_setfield(L, -2, "__index");
+  lua_pop(L, 1);
+  for (const char* meta : {kParticleMeta, kBlockMeta}) {
+    luaL_newmetatable(L, meta);
+    lua_pushcfunction(L, l_handle_index);
+    lua_setfield(L, -2, "__index");
+    lua_pushcfunction(L, l_handle_eq);
+    lua_setfield(L, -2, "__eq");
+    lua_pushcfunction(L, meta == kParticleMeta ? l_particle_tostring : l_block_tostring);
+    lua_setfield(L, -2, "__tostring");
+    lua_pop(L, 1);
+  }
+}
+
+}  // namespace
+
+void open_tendril(lua_State* L, const SceneOptions& options) {
+  g_options = &options;
+  register_model_meta(L);
+  lua_newtable(L);
+  set_fn<l_new_model>(L, "model");
+  set_fn<l_load>(L, "load");
+  set_fn<l_out>(L, "out");
+  lua_pushinteger(L, options.seed);
+  lua_setfield(L, -2, "seed");
+  lua_pushstring(L, options.out_dir.c_str());
+  lua_setfield(L, -2, "out_dir");
+}
+
+}  // namespace tendril::lua
