@@ -1,0 +1,266 @@
+// Solver throughput: particle-iterations per second of Solver::step()
+// (Leapfrog, kinetic damping) on a bar net and on a grid of 3-DOF beams, and
+// the memory the model takes per particle. DESIGN "Targets": >= 30 million
+// particle-iterations per second on one core for the bar net.
+//
+//   bench_throughput [--sizes 10K,100K,1M] [--seconds 1.5]
+#include <malloc.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "model/model.hpp"
+#include "physics/solver.hpp"
+
+using namespace tendril;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::string fmt(const char* f, ...) {
+  char buf[256];
+  va_list ap;
+  va_start(ap, f);
+  std::vsnprintf(buf, sizeof buf, f, ap);
+  va_end(ap);
+  return buf;
+}
+
+// Resident set size now, after handing freed heap back to the system so that
+// transient build scratch does not count as model memory.
+long resident_bytes() {
+  malloc_trim(0);
+  std::ifstream statm("/proc/self/statm");
+  long pages_total = 0, pages_resident = 0;
+  statm >> pages_total >> pages_resident;
+  return pages_resident * sysconf(_SC_PAGESIZE);
+}
+
+class Table {
+ public:
+  explicit Table(std::vector<std::string> head) { rows_.push_back(std::move(head)); }
+  void add(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
+  void print() const {
+    std::vector<std::size_t> w(rows_[0].size(), 0);
+    for (const auto& r : rows_)
+      for (std::size_t c = 0; c < r.size(); ++c) w[c] = std::max(w[c], r[c].size());
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+      std::string line;
+      for (std::size_t c = 0; c < rows_[i].size(); ++c) {
+        const std::string& s = rows_[i][c];
+        std::string pad(w[c] - s.size(), ' ');
+        line += (c == 0 ? s + pad : pad + s) + (c + 1 < rows_[i].size() ? "  " : "");
+      }
+      std::puts(line.c_str());
+      if (i == 0) {
+        std::size_t total = 0;
+        for (std::size_t x : w) total += x + 2;
+        std::puts(std::string(total - 2, '-').c_str());
+      }
+    }
+  }
+
+ private:
+  std::vector<std::vector<std::string>> rows_;
+};
+
+std::size_t parse_count(const std::string& s) {
+  char* end = nullptr;
+  double v = std::strtod(s.c_str(), &end);
+  std::string suffix(end);
+  if (suffix == "K" || suffix == "k") v *= 1e3;
+  else if (suffix == "M" || suffix == "m") v *= 1e6;
+  else if (!suffix.empty() || end == s.c_str()) throw std::runtime_error("bad size '" + s + "'");
+  if (!(v >= 1)) throw std::runtime_error("bad size '" + s + "'");
+  return static_cast<std::size_t>(std::llround(v));
+}
+
+std::vector<std::size_t> parse_sizes(const std::string& list) {
+  std::vector<std::size_t> out;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    std::size_t comma = list.find(',', start);
+    if (comma == std::string::npos) comma = list.size();
+    if (comma > start) out.push_back(parse_count(list.substr(start, comma - start)));
+    start = comma + 1;
+  }
+  if (out.empty()) throw std::runtime_error("--sizes needs a comma-separated list, e.g. 10K,100K,1M");
+  return out;
+}
+
+// --- models ------------------------------------------------------------------
+
+constexpr double kSpacing = 1.0;                      // m between grid particles
+constexpr double kLoad = 1.0;                         // N out of plane, per interior particle
+const Section kNetSection{1e5, 0, 1e3, 0};            // EA, -, prestress, -
+const Section kBeamSection{1e6, 1e2, 0, 0};           // EA, EI, -, -
+
+// An s x s planar grid of particles with its boundary locked and every
+// interior particle loaded out of plane. Returns grid[r * s + c].
+std::vector<ParticleId> supported_grid(Model& m, int s) {
+  std::vector<ParticleId> grid;
+  grid.reserve(std::size_t(s) * s);
+  for (int r = 0; r < s; ++r)
+    for (int c = 0; c < s; ++c) {
+      ParticleId p = m.add_particle(Vec3(c * kSpacing, r * kSpacing, 0));
+      grid.push_back(p);
+      if (r == 0 || c == 0 || r == s - 1 || c == s - 1) m.set_lock(p, kLockTranslation);
+      else m.set_load(p, Vec3(0, 0, -kLoad));
+    }
+  return grid;
+}
+
+void build_bar_net(Model& m, int s) { m.add_quad_grid(supported_grid(m, s), s, s, kNetSection); }
+
+// A woven grid: one beam along every row and one along every column, every
+// particle a crossing shared by two beams (a flat gridshell).
+void build_beam_grid(Model& m, int s) {
+  std::vector<ParticleId> grid = supported_grid(m, s);
+  std::vector<ParticleId> line(s);
+  for (int r = 0; r < s; ++r) {
+    for (int c = 0; c < s; ++c) line[c] = grid[r * s + c];
+    m.add_beam(line, kBeamSection);
+  }
+  for (int c = 0; c < s; ++c) {
+    for (int r = 0; r < s; ++r) line[r] = grid[r * s + c];
+    m.add_beam(line, kBeamSection);
+  }
+}
+
+struct Case {
+  const char* name;
+  void (*build)(Model&, int);
+};
+
+struct Measurement {
+  std::size_t particles = 0, bars = 0, hinges = 0;
+  double build_s = 0;
+  long rss_growth = 0;
+  std::uint64_t steps = 0;
+  double seconds = 0;
+  std::string check;
+};
+
+Measurement measure(const Case& c, std::size_t requested, double target_seconds) {
+  Measurement r;
+  const int side = std::max(3, static_cast<int>(std::lround(std::sqrt(double(requested)))));
+  const long rss0 = resident_bytes();
+  auto t0 = Clock::now();
+  auto model = std::make_unique<Model>();
+  c.build(*model, side);
+  r.build_s = seconds_since(t0);
+  r.rss_growth = resident_bytes() - rss0;
+  r.particles = model->particle_count();
+  r.bars = model->bars.size();
+  r.hinges = model->hinges.size();
+
+  Solver solver(*model);
+  solver.settings.damping = Damping::Kinetic;
+  for (int i = 0; i < 5; ++i) solver.step();  // warm-up: caches, first kinetic peaks
+  // Calibrate on at least 0.2 s of steps, then time ~target_seconds.
+  std::uint64_t probe = 0;
+  double probed = 0;
+  for (std::uint64_t batch = 1; probed < 0.2; batch *= 2) {
+    t0 = Clock::now();
+    for (std::uint64_t i = 0; i < batch; ++i) solver.step();
+    probed += seconds_since(t0);
+    probe += batch;
+  }
+  const double per_step = probed / probe;
+  r.steps = static_cast<std::uint64_t>(std::clamp(std::ceil(target_seconds / per_step), 5.0, 1e7));
+
+  t0 = Clock::now();
+  for (std::uint64_t i = 0; i < r.steps; ++i) solver.step();
+  r.seconds = seconds_since(t0);
+  if (!std::isfinite(solver.residual())) r.check = "residual is not finite";
+  else r.check = model->check();
+  return r;
+}
+
+int usage(const char* argv0, int code) {
+  std::fprintf(code ? stderr : stdout,
+               "usage: %s [--sizes 10K,100K,1M] [--seconds S]\n"
+               "  --sizes    particle counts (K/M suffixes; each becomes the nearest square grid)\n"
+               "  --seconds  target duration of each timed run (default 1.5)\n",
+               argv0);
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::size_t> sizes{10'000, 100'000, 1'000'000};
+  double target_seconds = 1.5;
+  try {
+    for (int i = 1; i < argc; ++i) {
+      std::string a = argv[i];
+      auto value = [&]() -> std::string {
+        if (i + 1 >= argc) throw std::runtime_error(a + " needs a value");
+        return argv[++i];
+      };
+      if (a == "--sizes") sizes = parse_sizes(value());
+      else if (a == "--seconds") target_seconds = std::stod(value());
+      else if (a == "-h" || a == "--help") return usage(argv[0], 0);
+      else throw std::runtime_error("unknown option '" + a + "'");
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_throughput: %s\n", e.what());
+    return usage(argv[0], 2);
+  }
+
+  const Case cases[] = {{"bar net", build_bar_net}, {"beam grid", build_beam_grid}};
+  std::puts("bench_throughput: Solver::step(), Leapfrog + kinetic damping, one thread");
+  std::puts("  bar net   : s x s planar quad grid patch (add_quad_grid), bars EA=1e5 N, prestress 1e3 N;");
+  std::puts("              boundary locked, 1 N out-of-plane load on every interior particle");
+  std::puts("  beam grid : s beams along x and s along y through an s x s grid, every particle a crossing");
+  std::puts("              shared by two 3-DOF spline beams (EA=1e6 N, EI=1e2 N m^2); same supports and load");
+  std::puts("  p-it = particle-iteration (one particle advanced one step); RSS = resident set growth while");
+  std::puts("  building the model (after malloc_trim), B/particle = that growth per particle");
+  std::printf("  target per timed run: %.1f s, after 5 warm-up steps and >= 0.2 s of calibration steps%s\n\n", target_seconds,
+#ifdef NDEBUG
+              ""
+#else
+              "   ** WARNING: built without NDEBUG (not a Release build) **"
+#endif
+  );
+
+  Table table({"case", "particles", "bars", "hinges", "build s", "steps", "seconds", "M p-it/s", "ns/p-step",
+               "RSS MB", "B/particle"});
+  std::string failure;
+  double bar_net_largest = -1;
+  std::size_t bar_net_largest_n = 0;
+  for (const Case& c : cases)
+    for (std::size_t n : sizes) {
+      Measurement r = measure(c, n, target_seconds);
+      const double pit = double(r.particles) * double(r.steps) / r.seconds;
+      table.add({c.name, fmt("%zu", r.particles), fmt("%zu", r.bars), fmt("%zu", r.hinges), fmt("%.2f", r.build_s),
+                 fmt("%llu", (unsigned long long)r.steps), fmt("%.2f", r.seconds), fmt("%.1f", pit / 1e6),
+                 fmt("%.1f", 1e9 / pit), fmt("%.1f", r.rss_growth / 1048576.0),
+                 fmt("%.0f", double(r.rss_growth) / double(r.particles))});
+      if (c.build == build_bar_net && r.particles >= bar_net_largest_n) {
+        bar_net_largest_n = r.particles;
+        bar_net_largest = pit;
+      }
+      if (!r.check.empty() && failure.empty()) failure = std::string(c.name) + " " + fmt("%zu", r.particles) + ": " + r.check;
+    }
+  table.print();
+  std::printf("\nDESIGN target >= 30 M p-it/s (bar net, one core): %.1f M p-it/s at %zu particles -> %s\n",
+              bar_net_largest / 1e6, bar_net_largest_n, bar_net_largest >= 30e6 ? "met" : "NOT met");
+  if (!failure.empty()) {
+    std::printf("check: FAILED (%s)\n", failure.c_str());
+    return 1;
+  }
+  std::puts("check: ok");
+  return 0;
+}
