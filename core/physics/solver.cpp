@@ -96,7 +96,7 @@ void Solver::integrate_leapfrog() {
     B = (1 + A) / 2;
   }
   const double first = restart_ ? 0.5 : 1.0;  // Leapfrog is not self-starting
-  double residual2 = 0, ke = 0;
+  double residual2 = 0, momentum2 = 0, ke = 0;
   bool finite = true;
   Vec3* v = P.velocity.data();
   const Vec3* F = P.force.data();
@@ -108,6 +108,7 @@ void Solver::integrate_leapfrog() {
     residual2 = std::max(residual2, Ff.squaredNorm());
     v[p] = (restart_ ? 0.0 : A) * v[p] + (first * B * dt / M) * Ff;  // eq. 3.11 / 3.26
     ke += M * v[p].squaredNorm();                                    // eq. 3.28
+    momentum2 = std::max(momentum2, M * M * v[p].squaredNorm());
   }
   if (!finite) {
     // Undo nothing: positions are untouched. Name the first culprit.
@@ -117,6 +118,10 @@ void Solver::integrate_leapfrog() {
                          std::to_string(steps_));
   }
   residual_ = std::sqrt(residual2);
+  // The force that would stop the fastest particle within one step: a
+  // particle crossing its equilibrium at speed has no residual but is not
+  // at rest, so convergence asks for both to be small.
+  motion_ = std::sqrt(momentum2) / dt;
   restart_ = false;
   Vec3* x = P.position.data();
   if (settings.damping == Damping::Kinetic && ke_samples_ >= 1 && ke < ke_prev_) {
@@ -138,6 +143,7 @@ void Solver::integrate_leapfrog() {
     ke_prev_ = ke_prev2_ = 0;
     restart_ = true;
     kinetic_energy_ = 0;
+    motion_ = 0;
     return;
   }
   for (std::size_t p = 0; p < n; ++p)
@@ -155,7 +161,7 @@ RunResult Solver::run(double tolerance, std::uint64_t max_steps,
     step();
     ++r.steps;
     r.residual = residual_;
-    if (residual_ < tolerance) {
+    if (residual_ < tolerance && motion_ < tolerance) {
       r.converged = true;
       break;
     }

@@ -41,7 +41,8 @@ class Solver {
   SolverSettings settings;
 
   void step();
-  // Steps until the residual is below `tolerance` or `max_steps` were taken.
+  // Steps until both the residual and motion() are below `tolerance` [N], or
+  // `max_steps` were taken.
   // `progress` (if set) is called every `progress_every` steps.
   RunResult run(double tolerance, std::uint64_t max_steps,
                 const std::function<void(const RunResult&)>& progress = {}, std::uint64_t progress_every = 1000);
@@ -49,6 +50,8 @@ class Solver {
   void compute_forces();  // residual forces and direct stiffnesses at the current positions
   double residual() const { return residual_; }
   double kinetic_energy() const { return kinetic_energy_; }
+  // Largest M |v| / dt: the force that would stop the fastest particle in one step.
+  double motion() const { return motion_; }
   std::uint64_t steps() const { return steps_; }
   double time() const { return time_; }
   std::uint64_t kinetic_resets() const { return resets_; }
@@ -63,7 +66,7 @@ class Solver {
   void integrate_leapfrog();
   void check_finite() const;
   Model& model_;
-  double residual_ = 0;
+  double residual_ = 0, motion_ = 0;
   double kinetic_energy_ = 0;
   double ke_prev_ = 0, ke_prev2_ = 0;  // E and D of eq. 3.29
   int ke_samples_ = 0;
