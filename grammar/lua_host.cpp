@@ -18,13 +18,15 @@ int traceback(lua_State* L) {
 }
 }  // namespace
 
-int run_scene(const std::string& path, const SceneOptions& options) {
+int run_scene(const std::string& path, const SceneOptions& options, std::string* error) {
+  auto fail = [&](const char* message) {
+    if (error) *error = message;
+    else std::fprintf(stderr, "tendril: error: %s\n", message);
+    return 1;
+  };
   std::unique_ptr<lua_State, decltype(&lua_close)> state(luaL_newstate(), &lua_close);
   lua_State* L = state.get();
-  if (!L) {
-    std::fprintf(stderr, "tendril: cannot create a Lua state\n");
-    return 1;
-  }
+  if (!L) return fail("cannot create a Lua state");
   luaL_openlibs(L);
   // Deterministic: the scene's random numbers depend on --seed only.
   lua_getglobal(L, "math");
@@ -36,14 +38,8 @@ int run_scene(const std::string& path, const SceneOptions& options) {
   lua_setglobal(L, "tendril");
 
   lua_pushcfunction(L, traceback);
-  if (luaL_loadfile(L, path.c_str()) != LUA_OK) {
-    std::fprintf(stderr, "tendril: error: %s\n", lua_tostring(L, -1));
-    return 1;
-  }
-  if (lua_pcall(L, 0, 0, -2) != LUA_OK) {
-    std::fprintf(stderr, "tendril: error: %s\n", lua_tostring(L, -1));
-    return 1;
-  }
+  if (luaL_loadfile(L, path.c_str()) != LUA_OK) return fail(lua_tostring(L, -1));
+  if (lua_pcall(L, 0, 0, -2) != LUA_OK) return fail(lua_tostring(L, -1));
   return 0;
 }
 

@@ -12,8 +12,9 @@ struct SceneOptions {
   bool progress = true;               // progress lines on stderr for long runs
 };
 
-// Runs the scene file. Returns 0 on success; on a Lua error prints the
-// message (file:line) and a traceback to stderr and returns 1.
-int run_scene(const std::string& path, const SceneOptions& options);
+// Runs the scene file. Returns 0 on success; on a Lua error returns 1 after
+// printing the message (file:line) and a traceback to stderr, or storing
+// them in *error when it is given.
+int run_scene(const std::string& path, const SceneOptions& options, std::string* error = nullptr);
 
 }  // namespace tendril
