@@ -75,6 +75,11 @@ void GMap::for_orbit(unsigned mask, Dart d, const std::function<bool(Dart)>& f) 
     seen.insert(it, y);
     return true;
   };
+  struct Restore {  // also when f throws
+    bool& flag;
+    bool value;
+    ~Restore() { flag = value; }
+  } restore{in_traversal_, nested};
   in_traversal_ = true;
   for (std::size_t head = 0; head < queue.size(); ++head) {
     Dart x = queue[head];
@@ -82,7 +87,6 @@ void GMap::for_orbit(unsigned mask, Dart d, const std::function<bool(Dart)>& f) 
     for (int i = 0; i < 3; ++i)
       if ((mask & (1u << i)) && visit(alpha_[i][x])) queue.push_back(alpha_[i][x]);
   }
-  in_traversal_ = nested;
 }
 
 std::vector<Dart> GMap::orbit(unsigned mask, Dart d) const {

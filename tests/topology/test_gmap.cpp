@@ -582,7 +582,7 @@ TEST_CASE("GMap: nested for_orbit") {
     edge_sizes.push_back(g.orbit_size(kEdgeOrbit, d));
     same_sizes.push_back(g.orbit(kVertexOrbit, d).size());
     for (Dart x : g.orbit(kFaceOrbit, d)) faces_union.insert(x);
-    return true;
+    return outer.size() < 64;  // guard: a broken traversal could revisit forever
   });
   CHECK(sorted(outer) == center_orbit);
   CHECK(face_sizes == std::vector<std::size_t>(8, 8));
@@ -592,9 +592,10 @@ TEST_CASE("GMap: nested for_orbit") {
 
   // Two levels of nesting, and the inner traversals see the same sets as
   // top-level ones.
-  std::size_t total = 0;
+  std::size_t total = 0, middle = 0, top = 0;
   bool all_match = true;
   g.for_orbit(kFaceOrbit, q[1][0], [&](Dart d) {
+    ++top;
     g.for_orbit(kVertexOrbit, d, [&](Dart e) {
       std::vector<Dart> comp;
       g.for_orbit(kComponentOrbit, e, [&](Dart x) {
@@ -602,7 +603,7 @@ TEST_CASE("GMap: nested for_orbit") {
         return true;
       });
       total += comp.size();
-      return true;
+      return ++middle < 1000;
     });
     std::vector<Dart> inner;
     g.for_orbit(kEdgeOrbit, d, [&](Dart x) {
@@ -610,8 +611,10 @@ TEST_CASE("GMap: nested for_orbit") {
       return true;
     });
     all_match = all_match && inner.front() == d && inner.size() == bfs_distance(g, kEdgeOrbit, d).size();
-    return true;
+    return top < 64;
   });
+  CHECK(top == 8);
+  CHECK(middle == 36);
   // Quad (1,0): corners (1,0),(2,0),(2,1),(1,1) have 4,2,4,8 darts, each
   // reached twice from the face -> 2*(4+2+4+8)=36 component walks of 32.
   CHECK(total == 36 * 32);
@@ -626,7 +629,7 @@ TEST_CASE("GMap: nested for_orbit") {
   g.for_orbit(kFaceOrbit, q[3][0], [&](Dart d) {
     ++outer_count;
     g.for_orbit(kComponentOrbit, d, [&](Dart) { return ++inner_count % 5 != 0; });
-    return true;
+    return outer_count < 64;
   });
   CHECK(outer_count == 8);
   CHECK(inner_count == 8 * 5);
@@ -638,7 +641,7 @@ TEST_CASE("GMap: nested for_orbit") {
   std::vector<std::size_t> after;
   g.for_orbit(kVertexOrbit, center, [&](Dart d) {
     after.push_back(g.orbit_size(kVertexOrbit, d));
-    return true;
+    return after.size() < 64;
   });
   CHECK(after == std::vector<std::size_t>(8, 8));
 }
