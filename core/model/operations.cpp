@@ -358,11 +358,13 @@ BlockId Model::add_quad_grid(const std::vector<ParticleId>& grid, int rows, int 
       }
     }
   blocks[blk].dart = side[0][0][0];
-  for (Dart d : map.orbit(kComponentOrbit, side[0][0][0]))
-    if (dart_bar[d] == kNone) {
-      set_edge_rest_length(d, (pos(d) - pos(map.alpha(0, d))).norm());
-      add_bar(d);
-    }
+  // Bars in row-major quad order keep the step's memory accesses local.
+  for (const auto& q : side)
+    for (const auto& edge : q)
+      if (dart_bar[edge[0]] == kNone) {
+        set_edge_rest_length(edge[0], (pos(edge[0]) - pos(edge[1])).norm());
+        add_bar(edge[0]);
+      }
   return blk;
 }
 

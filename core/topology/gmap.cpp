@@ -46,47 +46,16 @@ void GMap::unlink(int i, Dart d) {
   alpha_[i][e] = e;
 }
 
-void GMap::for_orbit(unsigned mask, Dart d, const std::function<bool(Dart)>& f) const {
-  // Visit stamps make a traversal linear in the orbit size. A traversal
-  // started from inside another one (f calling for_orbit) must not disturb
-  // the outer stamps, so it falls back to a sorted visited list.
-  const bool nested = in_traversal_;
-  std::vector<Dart> queue{d};
-  std::vector<Dart> seen;
-  std::uint32_t epoch = 0;
-  if (!nested) {
-    if (++epoch_ == 0) {
-      std::fill(stamp_.begin(), stamp_.end(), 0);
-      epoch_ = 1;
-    }
-    epoch = epoch_;
-    stamp_[d] = epoch;
-  } else {
-    seen.push_back(d);
-  }
-  auto visit = [&](Dart y) {
-    if (!nested) {
-      if (stamp_[y] == epoch) return false;
-      stamp_[y] = epoch;
-      return true;
-    }
-    auto it = std::lower_bound(seen.begin(), seen.end(), y);
-    if (it != seen.end() && *it == y) return false;
-    seen.insert(it, y);
+bool GMap::visit_once(Dart y, std::uint32_t epoch, std::vector<Dart>* seen) const {
+  if (!seen) {
+    if (stamp_[y] == epoch) return false;
+    stamp_[y] = epoch;
     return true;
-  };
-  struct Restore {  // also when f throws
-    bool& flag;
-    bool value;
-    ~Restore() { flag = value; }
-  } restore{in_traversal_, nested};
-  in_traversal_ = true;
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    Dart x = queue[head];
-    if (!f(x)) break;
-    for (int i = 0; i < 3; ++i)
-      if ((mask & (1u << i)) && visit(alpha_[i][x])) queue.push_back(alpha_[i][x]);
   }
+  auto it = std::lower_bound(seen->begin(), seen->end(), y);
+  if (it != seen->end() && *it == y) return false;
+  seen->insert(it, y);
+  return true;
 }
 
 std::vector<Dart> GMap::orbit(unsigned mask, Dart d) const {

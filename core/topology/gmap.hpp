@@ -4,7 +4,7 @@
 // involution is a fixed point (a boundary). Deleted darts are recycled.
 #include <array>
 #include <cstdint>
-#include <functional>
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -61,7 +61,9 @@ class GMap {
 
   // Visits every dart of the orbit of d spanned by `mask`, in a deterministic
   // breadth-first order starting at d. Returns early when f returns false.
-  void for_orbit(unsigned mask, Dart d, const std::function<bool(Dart)>& f) const;
+  // Small orbits (vertices, edges, faces) are traversed without allocating.
+  template <class F>
+  void for_orbit(unsigned mask, Dart d, F&& f) const;
   std::vector<Dart> orbit(unsigned mask, Dart d) const;
   std::size_t orbit_size(unsigned mask, Dart d) const;
 
@@ -87,10 +89,55 @@ class GMap {
   std::vector<Dart> free_list_;
   std::vector<std::unique_ptr<ColumnBase>> columns_;
   std::size_t live_ = 0;
+  bool visit_once(Dart y, std::uint32_t epoch, std::vector<Dart>* seen) const;
   // Scratch for orbit traversal: a visit stamp per dart avoids clearing.
   mutable std::vector<std::uint32_t> stamp_;
   mutable std::uint32_t epoch_ = 0;
   mutable bool in_traversal_ = false;
 };
+
+template <class F>
+void GMap::for_orbit(unsigned mask, Dart d, F&& f) const {
+  // Visit stamps make a traversal linear in the orbit size. A traversal
+  // started from inside another one (f calling for_orbit) must not disturb
+  // the outer stamps, so it keeps a sorted visited list instead.
+  constexpr std::size_t kInline = 32;
+  Dart inline_queue[kInline];
+  std::vector<Dart> heap_queue;
+  std::size_t size = 0;
+  auto push = [&](Dart x) {
+    if (size < kInline) inline_queue[size] = x;
+    else {
+      if (heap_queue.empty()) heap_queue.assign(inline_queue, inline_queue + kInline);
+      heap_queue.push_back(x);
+    }
+    ++size;
+  };
+  auto at = [&](std::size_t k) { return size <= kInline ? inline_queue[k] : heap_queue[k]; };
+  const bool nested = in_traversal_;
+  std::vector<Dart> seen;
+  std::uint32_t epoch = 0;
+  if (!nested) {
+    if (++epoch_ == 0) {
+      std::fill(stamp_.begin(), stamp_.end(), 0);
+      epoch_ = 1;
+    }
+    epoch = epoch_;
+  }
+  visit_once(d, epoch, nested ? &seen : nullptr);
+  push(d);
+  struct Restore {  // also when f throws
+    bool& flag;
+    bool value;
+    ~Restore() { flag = value; }
+  } restore{in_traversal_, nested};
+  in_traversal_ = true;
+  for (std::size_t head = 0; head < size; ++head) {
+    const Dart x = at(head);
+    if (!f(x)) break;
+    for (int i = 0; i < 3; ++i)
+      if ((mask & (1u << i)) && visit_once(alpha_[i][x], epoch, nested ? &seen : nullptr)) push(alpha_[i][x]);
+  }
+}
 
 }  // namespace tendril
