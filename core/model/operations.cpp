@@ -286,7 +286,6 @@ void Model::remove_from_beam(ParticleId p) {
     remove_hinge(d);
     remove_bar(d);
     remove_bar(e);
-    if (block.dart == d || block.dart == e) block.dart = block.closed ? a : block.dart;
     free_dart(d);
     free_dart(e);
     map.link(0, a, b);
@@ -304,7 +303,7 @@ void Model::remove_from_beam(ParticleId p) {
     remove_bar(d);
     free_dart(d);
     free_dart(a);
-    block.dart = a1;
+    if (block.dart == kNoDart) block.dart = a1;  // the start end went: a1 starts the path now
   }
   particles.release(p);
 }
