@@ -84,6 +84,7 @@ ParticleId Model::merge(const std::vector<ParticleId>& ps) {
 
 std::vector<ParticleId> Model::explode(ParticleId p) {
   require_particle(p, "explode");
+  if (particles.passive[p]) throw ModelError("explode: particle " + pid(p) + " is passive");
   std::vector<BlockId> bs = blocks_of(p);
   if (bs.size() < 2)
     throw ModelError("explode: particle " + pid(p) + " belongs to " + std::to_string(bs.size()) +
@@ -112,6 +113,7 @@ std::vector<ParticleId> Model::explode(ParticleId p) {
 ParticleId Model::explode_from(ParticleId p, BlockId b) {
   require_particle(p, "explode_from");
   require_block(b, "explode_from");
+  if (particles.passive[p]) throw ModelError("explode_from: particle " + pid(p) + " is passive");
   std::vector<BlockId> bs = blocks_of(p);
   if (bs.size() < 2)
     throw ModelError("explode_from: particle " + pid(p) + " is not shared");
@@ -227,9 +229,16 @@ BlockId Model::add_beam_from(ParticleId start, const Vec3& span, int segments, c
   if (segments < 1) throw ModelError("beam_from: segments must be >= 1, got " + std::to_string(segments));
   if (!(span.norm() > 0) || !span.allFinite()) throw ModelError("beam_from: direction must be a finite non-zero vector");
   check_section(s, "beam_from", true);
+  // Every point is checked before any particle exists, so a refusal leaves
+  // the model as it was.
+  std::vector<Vec3> points{particles.position[start]};
+  for (int k = 1; k <= segments; ++k) {
+    points.push_back(points[0] + span * (double(k) / segments));
+    if (!points.back().allFinite() || points.back() == points[k - 1])
+      throw ModelError("beam_from: the segments are too short to tell their ends apart at this position");
+  }
   std::vector<ParticleId> ps{start};
-  for (int k = 1; k <= segments; ++k)
-    ps.push_back(particles.allocate(particles.position[start] + span * (double(k) / segments)));
+  for (int k = 1; k <= segments; ++k) ps.push_back(particles.allocate(points[k]));
   return add_beam(ps, s, false);
 }
 
@@ -281,7 +290,11 @@ void Model::remove_from_beam(ParticleId p) {
     if (block.closed && block.darts <= 6)
       throw ModelError("remove_from_beam: a ring keeps at least 3 particles");
     Dart d = ds[0], e = map.alpha(1, d);
+    if (e != ds[1])
+      throw ModelError("remove_from_beam: particle " + pid(p) + " joins two ends of its beam; explode it first");
     Dart a = map.alpha(0, d), b = map.alpha(0, e);
+    if (dart_particle[a] == dart_particle[b])
+      throw ModelError("remove_from_beam: the neighbours of particle " + pid(p) + " are one particle; bridging would collapse the edge");
     const double length = rest_length[d] + rest_length[e];
     remove_hinge(d);
     remove_bar(d);
@@ -326,6 +339,14 @@ BlockId Model::add_quad_grid(const std::vector<ParticleId>& grid, int rows, int 
     if (!seen.insert(p).second) throw ModelError("quad_grid: particle " + pid(p) + " appears twice");
   }
   check_section(s, "quad_grid", false);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) {
+      const Vec3& x = particles.position[grid[r * cols + c]];
+      if ((c + 1 < cols && x == particles.position[grid[r * cols + c + 1]]) ||
+          (r + 1 < rows && x == particles.position[grid[(r + 1) * cols + c]]))
+        throw ModelError("quad_grid: the grid edge at row " + std::to_string(r) + ", column " + std::to_string(c) +
+                         " joins coincident particles");
+    }
   BlockId blk = new_block(BlockKind::Patch, s, false);
   // side[q][k][0|1]: dart of quad q on side k at its start / end corner.
   const int qr = rows - 1, qc = cols - 1;

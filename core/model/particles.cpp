@@ -2,7 +2,7 @@
 
 namespace tendril {
 
-ParticleId Particles::allocate(const Vec3& x) {
+ParticleId Particles::allocate(Vec3 x) {
   ParticleId p;
   if (!free_slots.empty()) {
     p = free_slots.back();

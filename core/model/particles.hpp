@@ -24,7 +24,7 @@ struct Particles {
   std::size_t capacity() const { return alive.size(); }
   bool valid(ParticleId p) const { return p < alive.size() && alive[p]; }
   double mass(ParticleId p) const { return point_mass[p] + lumped_mass[p]; }
-  ParticleId allocate(const Vec3& x);
+  ParticleId allocate(Vec3 x);  // by value: x may live in `position`
   void release(ParticleId p);
   void refresh_active(ParticleId p) { active[p] = alive[p] && degree[p] > 0 && !passive[p]; }
 };
