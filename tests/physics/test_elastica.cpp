@@ -20,7 +20,7 @@ struct ElasticaResult {
   double deflection, load, exact_deflection, exact_load;
 };
 
-ElasticaResult buckle(double theta0_deg) {
+ElasticaResult buckle(double theta0_deg, Damping damping = Damping::Kinetic, double viscous = 0) {
   const double L = 10, EI = 1e5, EA = 1e8;
   const int n = 64;
   const double k = std::sin(theta0_deg * std::numbers::pi / 360);
@@ -41,6 +41,8 @@ ElasticaResult buckle(double theta0_deg) {
   m.set_lock(ps.front(), kLockX | kLockY | kLockZ);
   m.set_lock(ps.back(), kLockX | kLockY | kLockZ);
   Solver solver(m);
+  solver.settings.damping = damping;
+  solver.settings.viscous = viscous;
   RunResult r = solver.run(1e-3, 2'000'000);
   REQUIRE(r.converged);
   REQUIRE(m.check() == "");
@@ -63,4 +65,10 @@ TEST_CASE("elastica: mid-span deflection and axial load within 1% of the exact e
     CHECK(std::abs(r.deflection / r.exact_deflection - 1) < 0.01);
     CHECK(std::abs(r.load / r.exact_load - 1) < 0.01);
   }
+}
+
+TEST_CASE("elastica with viscous damping reaches the same equilibrium") {
+  ElasticaResult r = buckle(80.0, Damping::Viscous, 0.02);
+  CHECK(std::abs(r.deflection / r.exact_deflection - 1) < 0.01);
+  CHECK(std::abs(r.load / r.exact_load - 1) < 0.01);
 }
