@@ -21,76 +21,16 @@
 #include <utility>
 #include <vector>
 
+#include "bench_util.hpp"
 #include "model/model.hpp"
 #include "physics/solver.hpp"
 
 using namespace tendril;
+using namespace tendril::bench;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-std::string fmt(const char* f, ...) {
-  char buf[256];
-  va_list ap;
-  va_start(ap, f);
-  std::vsnprintf(buf, sizeof buf, f, ap);
-  va_end(ap);
-  return buf;
-}
-
-class Table {
- public:
-  explicit Table(std::vector<std::string> head) { rows_.push_back(std::move(head)); }
-  void add(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
-  void print() const {
-    std::vector<std::size_t> w(rows_[0].size(), 0);
-    for (const auto& r : rows_)
-      for (std::size_t c = 0; c < r.size(); ++c) w[c] = std::max(w[c], r[c].size());
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-      std::string line;
-      for (std::size_t c = 0; c < rows_[i].size(); ++c) {
-        const std::string& s = rows_[i][c];
-        std::string pad(w[c] - s.size(), ' ');
-        line += (c == 0 ? s + pad : pad + s) + (c + 1 < rows_[i].size() ? "  " : "");
-      }
-      std::puts(line.c_str());
-      if (i == 0) {
-        std::size_t total = 0;
-        for (std::size_t x : w) total += x + 2;
-        std::puts(std::string(total - 2, '-').c_str());
-      }
-    }
-  }
-
- private:
-  std::vector<std::vector<std::string>> rows_;
-};
-
-std::size_t parse_count(const std::string& s) {
-  char* end = nullptr;
-  double v = std::strtod(s.c_str(), &end);
-  std::string suffix(end);
-  if (suffix == "K" || suffix == "k") v *= 1e3;
-  else if (suffix == "M" || suffix == "m") v *= 1e6;
-  else if (!suffix.empty() || end == s.c_str()) throw std::runtime_error("bad size '" + s + "'");
-  if (!(v >= 1)) throw std::runtime_error("bad size '" + s + "'");
-  return static_cast<std::size_t>(std::llround(v));
-}
-
-std::vector<std::size_t> parse_sizes(const std::string& list) {
-  std::vector<std::size_t> out;
-  std::size_t start = 0;
-  while (start <= list.size()) {
-    std::size_t comma = list.find(',', start);
-    if (comma == std::string::npos) comma = list.size();
-    if (comma > start) out.push_back(parse_count(list.substr(start, comma - start)));
-    start = comma + 1;
-  }
-  if (out.empty()) throw std::runtime_error("--sizes needs a comma-separated list, e.g. 1K,100K,1M");
-  return out;
-}
 
 // --- the live model ------------------------------------------------------------
 //

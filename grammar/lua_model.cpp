@@ -100,6 +100,31 @@ std::vector<ParticleId> check_particle_list(lua_State* L, int idx, Scene& s, con
   return out;
 }
 
+// The particle list, or the particle, stored under `key` of the table at idx.
+std::vector<ParticleId> field_particle_list(lua_State* L, int idx, const char* key, Scene& s, const char* fn) {
+  lua_getfield(L, idx, key);
+  try {
+    std::vector<ParticleId> out = check_particle_list(L, lua_gettop(L), s, fn);
+    lua_pop(L, 1);
+    return out;
+  } catch (...) {
+    lua_pop(L, 1);
+    throw;
+  }
+}
+
+ParticleId field_particle(lua_State* L, int idx, const char* key, Scene& s, const char* fn) {
+  lua_getfield(L, idx, key);
+  try {
+    ParticleId p = check_particle(L, lua_gettop(L), s, fn);
+    lua_pop(L, 1);
+    return p;
+  } catch (...) {
+    lua_pop(L, 1);
+    throw;
+  }
+}
+
 // Section from {EA=, EI=} or {E=, A=, I=}, plus prestress and line_mass.
 Section read_section(lua_State* L, int idx, const char* fn, bool beam) {
   Section s;
@@ -261,31 +286,14 @@ int l_beam(lua_State* L) {
   BlockId b;
   if (has_field(L, 2, "from")) {
     if (closed) key_error(fn, "closed", "is not available with 'from'");
-    lua_getfield(L, 2, "from");
-    ParticleId start;
-    try {
-      start = check_particle(L, lua_gettop(L), s, fn);
-    } catch (...) {
-      lua_pop(L, 1);
-      throw;
-    }
-    lua_pop(L, 1);
+    const ParticleId start = field_particle(L, 2, "from", s, fn);
     Vec3 dir = field_vec3(L, 2, "direction", fn);
     if (!has_field(L, 2, "segments")) key_error(fn, "segments", "is required with 'from'");
     double seg = field_number(L, 2, "segments", fn, 0);
     if (seg != std::floor(seg) || seg < 1) key_error(fn, "segments", "must be an integer >= 1");
     b = s.model.add_beam_from(start, dir, int(seg), sec);
   } else if (has_field(L, 2, "particles")) {
-    lua_getfield(L, 2, "particles");
-    std::vector<ParticleId> ps;
-    try {
-      ps = check_particle_list(L, lua_gettop(L), s, fn);
-    } catch (...) {
-      lua_pop(L, 1);
-      throw;
-    }
-    lua_pop(L, 1);
-    b = s.model.add_beam(ps, sec, closed);
+    b = s.model.add_beam(field_particle_list(L, 2, "particles", s, fn), sec, closed);
   } else {
     lua_getfield(L, 2, "points");
     const int t = lua_gettop(L);
@@ -328,16 +336,7 @@ int l_quad_grid(lua_State* L) {
   check_keys(L, 2, fn, {"particles", "rows", "cols", "EA", "E", "A", "prestress", "line_mass"});
   Section sec = read_section(L, 2, fn, false);
   const double rows = field_number(L, 2, "rows", fn, 0), cols = field_number(L, 2, "cols", fn, 0);
-  lua_getfield(L, 2, "particles");
-  std::vector<ParticleId> ps;
-  try {
-    ps = check_particle_list(L, lua_gettop(L), s, fn);
-  } catch (...) {
-    lua_pop(L, 1);
-    throw;
-  }
-  lua_pop(L, 1);
-  push_block(L, s, s.model.add_quad_grid(ps, int(rows), int(cols), sec));
+  push_block(L, s, s.model.add_quad_grid(field_particle_list(L, 2, "particles", s, fn), int(rows), int(cols), sec));
   return 1;
 }
 
