@@ -4,6 +4,7 @@
 // both. Every primitive operation of thesis 4.2.7 patches only the darts,
 // particles and elements it touches; rebuild_elements() recomputes all of
 // them from the map and exists to check that claim (and to measure it).
+#include <array>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,11 @@ class Model {
   // grid[r * cols + c] are existing particles; quads are sewn by alpha2 and
   // every edge carries a bar with the given section.
   BlockId add_quad_grid(const std::vector<ParticleId>& grid, int rows, int cols, const Section& s);
+  // A patch from quads of existing particles (corners in order around each
+  // quad). Quads sharing an edge are sewn by alpha2; the quads must form one
+  // piece with every edge in at most two quads. Used by the meshing layer.
+  using Quad = std::array<ParticleId, 4>;
+  BlockId add_patch(const std::vector<Quad>& quads, const Section& s);
 
   // --- constraints and loads --------------------------------------------
   void set_lock(ParticleId p, std::uint8_t bits);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "model/model.hpp"
@@ -347,38 +348,74 @@ BlockId Model::add_quad_grid(const std::vector<ParticleId>& grid, int rows, int 
         throw ModelError("quad_grid: the grid edge at row " + std::to_string(r) + ", column " + std::to_string(c) +
                          " joins coincident particles");
     }
+  std::vector<Quad> quads;
+  for (int r = 0; r + 1 < rows; ++r)
+    for (int c = 0; c + 1 < cols; ++c)
+      quads.push_back({grid[r * cols + c], grid[r * cols + c + 1], grid[(r + 1) * cols + c + 1], grid[(r + 1) * cols + c]});
+  return add_patch(quads, s);
+}
+
+BlockId Model::add_patch(const std::vector<Quad>& quads, const Section& s) {
+  if (quads.empty()) throw ModelError("patch: needs at least one quad");
+  check_section(s, "patch", false);
+  // Validate everything first: corners, edges, and that the quads form one
+  // connected quasi-manifold component (an edge in at most two quads).
+  std::map<std::pair<ParticleId, ParticleId>, std::vector<std::pair<std::size_t, int>>> edges;
+  for (std::size_t q = 0; q < quads.size(); ++q) {
+    const Quad& quad = quads[q];
+    for (int k = 0; k < 4; ++k) {
+      require_particle(quad[k], "patch");
+      for (int l = k + 1; l < 4; ++l)
+        if (quad[k] == quad[l]) throw ModelError("patch: quad " + std::to_string(q) + " repeats particle " + pid(quad[k]));
+      ParticleId a = quad[k], b = quad[(k + 1) % 4];
+      if (particles.position[a] == particles.position[b])
+        throw ModelError("patch: quad " + std::to_string(q) + " has an edge between coincident particles " + pid(a) + " and " + pid(b));
+      auto& list = edges[{std::min(a, b), std::max(a, b)}];
+      list.push_back({q, k});
+      if (list.size() > 2)
+        throw ModelError("patch: the edge " + pid(a) + "-" + pid(b) + " belongs to more than two quads");
+    }
+  }
+  {  // connectivity: a patch is one connected component
+    std::vector<std::size_t> parent(quads.size());
+    for (std::size_t q = 0; q < quads.size(); ++q) parent[q] = q;
+    auto root = [&](std::size_t q) {
+      while (parent[q] != q) q = parent[q] = parent[parent[q]];
+      return q;
+    };
+    std::size_t groups = quads.size();
+    for (const auto& [key, list] : edges)
+      if (list.size() == 2) {
+        std::size_t a = root(list[0].first), b = root(list[1].first);
+        if (a != b) {
+          parent[a] = b;
+          --groups;
+        }
+      }
+    if (groups != 1) throw ModelError("patch: the quads form " + std::to_string(groups) + " separate pieces; a patch is one piece");
+  }
   BlockId blk = new_block(BlockKind::Patch, s, false);
   // side[q][k][0|1]: dart of quad q on side k at its start / end corner.
-  const int qr = rows - 1, qc = cols - 1;
-  std::vector<std::array<std::array<Dart, 2>, 4>> side(std::size_t(qr) * qc);
-  for (int r = 0; r < qr; ++r)
-    for (int c = 0; c < qc; ++c) {
-      ParticleId corner[4] = {grid[r * cols + c], grid[r * cols + c + 1], grid[(r + 1) * cols + c + 1],
-                              grid[(r + 1) * cols + c]};
-      auto& q = side[r * qc + c];
-      for (int k = 0; k < 4; ++k) {
-        q[k][0] = new_dart(blk, corner[k]);
-        q[k][1] = new_dart(blk, corner[(k + 1) % 4]);
-        map.link(0, q[k][0], q[k][1]);
-      }
-      for (int k = 0; k < 4; ++k) map.link(1, q[k][1], q[(k + 1) % 4][0]);
+  std::vector<std::array<std::array<Dart, 2>, 4>> side(quads.size());
+  for (std::size_t q = 0; q < quads.size(); ++q) {
+    for (int k = 0; k < 4; ++k) {
+      side[q][k][0] = new_dart(blk, quads[q][k]);
+      side[q][k][1] = new_dart(blk, quads[q][(k + 1) % 4]);
+      map.link(0, side[q][k][0], side[q][k][1]);
     }
-  for (int r = 0; r < qr; ++r)
-    for (int c = 0; c < qc; ++c) {
-      auto& q = side[r * qc + c];
-      if (c + 1 < qc) {  // right side 1 (c1->c2) against the neighbour's left side 3 (c3->c0)
-        auto& n = side[r * qc + c + 1];
-        map.link(2, q[1][0], n[3][1]);
-        map.link(2, q[1][1], n[3][0]);
-      }
-      if (r + 1 < qr) {  // bottom side 2 (c2->c3) against the neighbour's top side 0 (c0->c1)
-        auto& n = side[(r + 1) * qc + c];
-        map.link(2, q[2][0], n[0][1]);
-        map.link(2, q[2][1], n[0][0]);
-      }
-    }
+    for (int k = 0; k < 4; ++k) map.link(1, side[q][k][1], side[q][(k + 1) % 4][0]);
+  }
+  // Sew shared edges by alpha2, dart against the dart on the same particle.
+  for (const auto& [key, list] : edges) {
+    if (list.size() != 2) continue;
+    const auto& s0 = side[list[0].first][list[0].second];
+    const auto& s1 = side[list[1].first][list[1].second];
+    const bool same = dart_particle[s0[0]] == dart_particle[s1[0]];
+    map.link(2, s0[0], same ? s1[0] : s1[1]);
+    map.link(2, s0[1], same ? s1[1] : s1[0]);
+  }
   blocks[blk].dart = side[0][0][0];
-  // Bars in row-major quad order keep the step's memory accesses local.
+  // Bars in quad order keep the step's memory accesses local.
   for (const auto& q : side)
     for (const auto& edge : q)
       if (dart_bar[edge[0]] == kNone) {
