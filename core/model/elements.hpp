@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "model/types.hpp"
+#include "model/undo_log.hpp"
 
 namespace tendril {
 
@@ -29,7 +30,7 @@ struct Hinge {
 
 template <class E>
 struct ElementBuffer {
-  std::vector<E> items;
+  LoggedVector<E> items;
   std::size_t size() const { return items.size(); }
   E& operator[](std::size_t n) { return items[n]; }
   const E& operator[](std::size_t n) const { return items[n]; }

@@ -13,7 +13,14 @@ Model::Model()
       dart_hinge(map.add_column<ElementIndex>(kNone)),
       ring_next(map.add_column<Dart>(kNoDart)),
       ring_prev(map.add_column<Dart>(kNoDart)),
-      rest_length(map.add_column<double>(0.0)) {}
+      rest_length(map.add_column<double>(0.0)) {
+  UndoLog* log = &map.undo_log();
+  particles.attach(log);
+  blocks.attach(log);
+  free_blocks_.attach(log);
+  bars.items.attach(log);
+  hinges.items.attach(log);
+}
 
 void Model::require_particle(ParticleId p, const char* what) const {
   if (!particles.valid(p))
@@ -32,7 +39,7 @@ BlockId Model::new_block(BlockKind k, const Section& s, bool closed) {
     free_blocks_.pop_back();
   } else {
     b = static_cast<BlockId>(blocks.size());
-    blocks.emplace_back();
+    blocks.push_back(Block{});
   }
   Block& blk = blocks[b];
   blk.kind = k;
@@ -41,6 +48,7 @@ BlockId Model::new_block(BlockKind k, const Section& s, bool closed) {
   blk.dart = kNoDart;
   blk.darts = 0;
   blk.alive = true;
+  map.undo_log().scalar(live_blocks_);
   ++live_blocks_;
   return b;
 }
@@ -50,6 +58,7 @@ void Model::free_block(BlockId b) {
   blocks[b].dart = kNoDart;
   ++blocks[b].generation;
   free_blocks_.push_back(b);
+  map.undo_log().scalar(live_blocks_);
   --live_blocks_;
 }
 
@@ -231,7 +240,7 @@ void Model::refresh_vertex(Dart d) {
 void Model::rebuild_elements() {
   bars.items.clear();
   hinges.items.clear();
-  std::fill(particles.lumped_mass.begin(), particles.lumped_mass.end(), 0.0);
+  for (ParticleId p = 0; p < particles.capacity(); ++p) particles.lumped_mass[p] = 0.0;
   const std::size_t n = map.capacity();
   for (Dart d = 0; d < n; ++d) {
     dart_bar[d] = kNone;

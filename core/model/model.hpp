@@ -28,6 +28,8 @@ struct Block {
 class Model {
  public:
   Model();
+  Model(const Model&) = delete;
+  Model& operator=(const Model&) = delete;
 
   // --- particles (rules 1-5) -------------------------------------------
   ParticleId add_particle(const Vec3& x);                    // rule 1
@@ -86,9 +88,18 @@ class Model {
   // criticises; kept to check the local patches and to benchmark them).
   void rebuild_elements();
 
+  // --- transactions (DESIGN principle 2) --------------------------------------
+  // Between begin and commit every change is logged; rollback restores the
+  // model exactly (topology, positions, velocities, element parameters) at a
+  // cost proportional to what changed.
+  void begin_transaction() { map.undo_log().begin(); }
+  void commit_transaction() { map.undo_log().commit(); }
+  void rollback_transaction() { map.undo_log().rollback(); }
+  bool in_transaction() { return map.undo_log().recording(); }
+
   GMap map;
   Particles particles;
-  std::vector<Block> blocks;
+  LoggedVector<Block> blocks;
   ElementBuffer<Bar> bars;
   ElementBuffer<Hinge> hinges;
 
@@ -127,7 +138,7 @@ class Model {
   void delete_component(BlockId b);
   Vec3 pos(Dart d) const { return particles.position[dart_particle[d]]; }
   std::size_t live_blocks_ = 0;
-  std::vector<BlockId> free_blocks_;
+  LoggedVector<BlockId> free_blocks_;
 };
 
 }  // namespace tendril

@@ -2,6 +2,14 @@
 
 namespace tendril {
 
+void Particles::attach(UndoLog* undo) {
+  log = undo;
+  for (auto* v : {&position, &velocity, &force, &load}) v->attach(undo);
+  for (auto* v : {&stiffness, &point_mass, &lumped_mass}) v->attach(undo);
+  for (auto* v : {&lock, &alive, &passive, &active}) v->attach(undo);
+  for (auto* v : {&generation, &first_dart, &degree, &free_slots}) v->attach(undo);
+}
+
 ParticleId Particles::allocate(Vec3 x) {
   ParticleId p;
   if (!free_slots.empty()) {
@@ -9,10 +17,7 @@ ParticleId Particles::allocate(Vec3 x) {
     free_slots.pop_back();
   } else {
     p = static_cast<ParticleId>(alive.size());
-    position.emplace_back();
-    velocity.emplace_back();
-    force.emplace_back();
-    load.emplace_back();
+    for (auto* v : {&position, &velocity, &force, &load}) v->push_back(Vec3::Zero());
     stiffness.push_back(0);
     point_mass.push_back(0);
     lumped_mass.push_back(0);
@@ -37,6 +42,7 @@ ParticleId Particles::allocate(Vec3 x) {
   active[p] = 0;
   first_dart[p] = kNone;
   degree[p] = 0;
+  if (log) log->scalar(live);
   ++live;
   return p;
 }
@@ -46,6 +52,7 @@ void Particles::release(ParticleId p) {
   active[p] = 0;
   ++generation[p];
   free_slots.push_back(p);
+  if (log) log->scalar(live);
   --live;
 }
 

@@ -4,23 +4,28 @@
 #include <vector>
 
 #include "model/types.hpp"
+#include "model/undo_log.hpp"
 
 namespace tendril {
 
+// Writes through operator[] are logged during transactions; the solver
+// reaches the hot columns through data().
 struct Particles {
-  std::vector<Vec3> position, velocity, force, load;
-  std::vector<double> stiffness;   // greatest direct stiffness S (eq. 3.4)
-  std::vector<double> point_mass;  // physical mass set on the particle [kg]
-  std::vector<double> lumped_mass; // physical mass lumped from its elements
-  std::vector<std::uint8_t> lock;  // LockBits
-  std::vector<std::uint8_t> alive, passive;
-  std::vector<std::uint8_t> active;  // integrated this step: alive, has blocks, not passive
-  std::vector<std::uint32_t> generation;
-  std::vector<std::uint32_t> first_dart;  // head of the ring of darts embedding it
-  std::vector<std::uint32_t> degree;      // number of darts embedding it
-  std::vector<ParticleId> free_slots;
+  LoggedVector<Vec3> position, velocity, force, load;
+  LoggedVector<double> stiffness;   // greatest direct stiffness S (eq. 3.4)
+  LoggedVector<double> point_mass;  // physical mass set on the particle [kg]
+  LoggedVector<double> lumped_mass; // physical mass lumped from its elements
+  LoggedVector<std::uint8_t> lock;  // LockBits
+  LoggedVector<std::uint8_t> alive, passive;
+  LoggedVector<std::uint8_t> active;  // integrated this step: alive, has blocks, not passive
+  LoggedVector<std::uint32_t> generation;
+  LoggedVector<std::uint32_t> first_dart;  // head of the ring of darts embedding it
+  LoggedVector<std::uint32_t> degree;      // number of darts embedding it
+  LoggedVector<ParticleId> free_slots;
   std::size_t live = 0;
+  UndoLog* log = nullptr;
 
+  void attach(UndoLog* undo);
   std::size_t capacity() const { return alive.size(); }
   bool valid(ParticleId p) const { return p < alive.size() && alive[p]; }
   double mass(ParticleId p) const { return point_mass[p] + lumped_mass[p]; }

@@ -178,7 +178,7 @@ Vec3 Solver::reaction(ParticleId p) const {
 
 void Solver::reset_motion() {
   Particles& P = model_.particles;
-  for (auto& v : P.velocity) v.setZero();
+  for (auto& v : P.velocity.raw()) v.setZero();
   ke_samples_ = 0;
   ke_prev_ = ke_prev2_ = kinetic_energy_ = 0;
   restart_ = true;

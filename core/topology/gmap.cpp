@@ -5,6 +5,12 @@
 
 namespace tendril {
 
+GMap::GMap() {
+  for (auto& a : alpha_) a.attach(&log_);
+  alive_.attach(&log_);
+  free_list_.attach(&log_);
+}
+
 Dart GMap::create_dart() {
   Dart d;
   if (!free_list_.empty()) {
@@ -15,11 +21,12 @@ Dart GMap::create_dart() {
     d = static_cast<Dart>(alive_.size());
     for (auto& a : alpha_) a.push_back(d);
     alive_.push_back(0);
-    stamp_.push_back(0);
-    for (auto& c : columns_) c->resize(alive_.size());
+    if (stamp_.size() < alive_.size()) stamp_.push_back(0);  // scratch: never shrinks
+    for (auto& c : columns_) c->grow();
   }
   for (auto& a : alpha_) a[d] = d;
   alive_[d] = 1;
+  log_.scalar(live_);
   ++live_;
   return d;
 }
@@ -30,6 +37,7 @@ void GMap::delete_dart(Dart d) {
     if (!is_free(i, d)) throw std::logic_error("delete_dart: dart is still linked");
   alive_[d] = 0;
   free_list_.push_back(d);
+  log_.scalar(live_);
   --live_;
 }
 

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "model/undo_log.hpp"
+
 namespace tendril {
 
 using Dart = std::uint32_t;
@@ -16,26 +18,27 @@ inline constexpr Dart kNoDart = 0xffffffffu;
 
 // A column of per-dart data that follows the map through creation, deletion
 // and reuse of darts (CGoGN style). Columns are registered with the map.
+// Writes are logged while the map's undo log records a transaction.
 class ColumnBase {
  public:
   virtual ~ColumnBase() = default;
-  virtual void resize(std::size_t n) = 0;
+  virtual void grow() = 0;  // one more dart, holding the fill value
   virtual void reset(Dart d) = 0;
 };
 
 template <class T>
 class DartColumn final : public ColumnBase {
  public:
-  explicit DartColumn(T fill) : fill_(fill) {}
+  DartColumn(T fill, UndoLog* log) : fill_(fill) { data_.attach(log); }
   T& operator[](Dart d) { return data_[d]; }
   const T& operator[](Dart d) const { return data_[d]; }
-  void resize(std::size_t n) override { data_.resize(n, fill_); }
+  void grow() override { data_.push_back(fill_); }
   void reset(Dart d) override { data_[d] = fill_; }
   std::size_t size() const { return data_.size(); }
 
  private:
   T fill_;
-  std::vector<T> data_;
+  LoggedVector<T> data_;
 };
 
 // Bit mask of involutions spanning an orbit: vertex <a1,a2>, edge <a0,a2>,
@@ -74,19 +77,27 @@ class GMap {
   // Returns an empty string when valid, otherwise the first violation.
   std::string check() const;
 
+  // The log every change of the map (and of models built on it) goes through.
+  UndoLog& undo_log() { return log_; }
+
   template <class T>
   DartColumn<T>& add_column(T fill) {
-    auto c = std::make_unique<DartColumn<T>>(fill);
-    c->resize(alive_.size());
+    auto c = std::make_unique<DartColumn<T>>(fill, &log_);
+    for (std::size_t k = 0; k < alive_.size(); ++k) c->grow();
     auto& ref = *c;
     columns_.push_back(std::move(c));
     return ref;
   }
 
+ GMap();
+  GMap(const GMap&) = delete;  // columns and logs point into the map
+  GMap& operator=(const GMap&) = delete;
+
  private:
-  std::array<std::vector<Dart>, 3> alpha_;
-  std::vector<std::uint8_t> alive_;
-  std::vector<Dart> free_list_;
+  UndoLog log_;
+  std::array<LoggedVector<Dart>, 3> alpha_;
+  LoggedVector<std::uint8_t> alive_;
+  LoggedVector<Dart> free_list_;
   std::vector<std::unique_ptr<ColumnBase>> columns_;
   std::size_t live_ = 0;
   bool visit_once(Dart y, std::uint32_t epoch, std::vector<Dart>* seen) const;
