@@ -11,94 +11,14 @@
 #include "io/model_xml.hpp"
 #include "io/obj.hpp"
 #include "lua_args.hpp"
+#include "lua_rules.hpp"
+#include "lua_scene.hpp"
 #include "model/model.hpp"
 #include "physics/solver.hpp"
 
 namespace tendril::lua {
 
 namespace {
-
-const char* const kModelMeta = "tendril.Model";
-const char* const kParticleMeta = "tendril.Particle";
-const char* const kBlockMeta = "tendril.Block";
-
-struct Scene {
-  Model model;
-  Solver solver{model};
-  const SceneOptions* options = nullptr;
-};
-
-struct Handle {
-  Scene* scene;
-  std::uint32_t id;
-  std::uint32_t generation;
-};
-
-const SceneOptions* g_options = nullptr;  // set by open_tendril for the host's lifetime
-
-Scene& check_scene(lua_State* L, const char* fn) {
-  auto* s = static_cast<Scene**>(luaL_testudata(L, 1, kModelMeta));
-  if (!s || !*s) arg_error(fn, 1, "expected a model (call it as m:" + std::string(fn) + "(...))");
-  return **s;
-}
-
-ParticleId check_particle(lua_State* L, int idx, Scene& scene, const char* fn) {
-  auto* h = static_cast<Handle*>(luaL_testudata(L, idx, kParticleMeta));
-  if (!h) arg_error(fn, idx, std::string("expected a particle, got ") + luaL_typename(L, idx));
-  if (h->scene != &scene) arg_error(fn, idx, "the particle belongs to another model");
-  const Particles& P = scene.model.particles;
-  if (!P.valid(h->id) || P.generation[h->id] != h->generation)
-    arg_error(fn, idx, "particle " + std::to_string(h->id) + " was deleted");
-  return h->id;
-}
-
-BlockId check_block(lua_State* L, int idx, Scene& scene, const char* fn) {
-  auto* h = static_cast<Handle*>(luaL_testudata(L, idx, kBlockMeta));
-  if (!h) arg_error(fn, idx, std::string("expected a block, got ") + luaL_typename(L, idx));
-  if (h->scene != &scene) arg_error(fn, idx, "the block belongs to another model");
-  if (!scene.model.block_valid(h->id) || scene.model.blocks[h->id].generation != h->generation)
-    arg_error(fn, idx, "block " + std::to_string(h->id) + " was deleted");
-  return h->id;
-}
-
-void push_handle(lua_State* L, int model_idx, const char* meta, Scene& scene, std::uint32_t id, std::uint32_t gen) {
-  model_idx = lua_absindex(L, model_idx);
-  auto* h = static_cast<Handle*>(lua_newuserdatauv(L, sizeof(Handle), 1));
-  *h = Handle{&scene, id, gen};
-  luaL_setmetatable(L, meta);
-  lua_pushvalue(L, model_idx);  // keeps the model alive while the handle lives
-  lua_setiuservalue(L, -2, 1);
-}
-
-void push_particle(lua_State* L, Scene& s, ParticleId p) {
-  push_handle(L, 1, kParticleMeta, s, p, s.model.particles.generation[p]);
-}
-
-void push_block(lua_State* L, Scene& s, BlockId b) {
-  push_handle(L, 1, kBlockMeta, s, b, s.model.blocks[b].generation);
-}
-
-std::vector<ParticleId> check_particle_list(lua_State* L, int idx, Scene& s, const char* fn) {
-  idx = lua_absindex(L, idx);
-  check_table(L, idx, fn);
-  std::vector<ParticleId> out;
-  const lua_Integer n = lua_rawlen(L, idx);
-  for (lua_Integer k = 1; k <= n; ++k) {
-    lua_rawgeti(L, idx, k);
-    auto* h = static_cast<Handle*>(luaL_testudata(L, -1, kParticleMeta));
-    lua_pop(L, 1);
-    if (!h) arg_error(fn, int(idx), "entry " + std::to_string(k) + " is not a particle");
-    lua_rawgeti(L, idx, k);
-    try {
-      out.push_back(check_particle(L, lua_gettop(L), s, fn));
-    } catch (...) {
-      lua_pop(L, 1);
-      throw;
-    }
-    lua_pop(L, 1);
-  }
-  return out;
-}
 
 // The particle list, or the particle, stored under `key` of the table at idx.
 std::vector<ParticleId> field_particle_list(lua_State* L, int idx, const char* key, Scene& s, const char* fn) {
@@ -256,14 +176,17 @@ int l_gc(lua_State* L) {
 
 int l_particle(lua_State* L) {
   Scene& s = check_scene(L, "particle");
+  JournalScope record(s, "particle", describe_args(L, 2, lua_gettop(L)));
   Vec3 x = check_vec3(L, 2, "particle");
   push_particle(L, s, s.model.add_particle(x));
+  record.done();
   return 1;
 }
 
 int l_cable(lua_State* L) {
   const char* fn = "cable";
   Scene& s = check_scene(L, fn);
+  JournalScope record(s, "cable", describe_args(L, 2, lua_gettop(L)));
   ParticleId a = check_particle(L, 2, s, fn), b = check_particle(L, 3, s, fn);
   check_table(L, 4, fn);
   check_keys(L, 4, fn, {"EA", "E", "A", "prestress", "line_mass", "rest_length"});
@@ -271,12 +194,14 @@ int l_cable(lua_State* L) {
   double rest = field_number(L, 4, "rest_length", fn, 0);
   if (has_field(L, 4, "rest_length") && !(rest > 0)) key_error(fn, "rest_length", "must be > 0");
   push_block(L, s, s.model.add_cable(a, b, sec, rest));
+  record.done();
   return 1;
 }
 
 int l_beam(lua_State* L) {
   const char* fn = "beam";
   Scene& s = check_scene(L, fn);
+  JournalScope record(s, "beam", describe_args(L, 2, lua_gettop(L)));
   check_table(L, 2, fn);
   check_keys(L, 2, fn, {"points", "particles", "from", "direction", "segments", "closed", "EA", "EI", "E", "A", "I", "prestress", "line_mass"});
   Section sec = read_section(L, 2, fn, true);
@@ -326,72 +251,89 @@ int l_beam(lua_State* L) {
     }
   }
   push_block(L, s, b);
+  record.done();
   return 1;
 }
 
 int l_quad_grid(lua_State* L) {
   const char* fn = "quad_grid";
   Scene& s = check_scene(L, fn);
+  JournalScope record(s, "quad_grid", describe_args(L, 2, lua_gettop(L)));
   check_table(L, 2, fn);
   check_keys(L, 2, fn, {"particles", "rows", "cols", "EA", "E", "A", "prestress", "line_mass"});
   Section sec = read_section(L, 2, fn, false);
   const double rows = field_number(L, 2, "rows", fn, 0), cols = field_number(L, 2, "cols", fn, 0);
   push_block(L, s, s.model.add_quad_grid(field_particle_list(L, 2, "particles", s, fn), int(rows), int(cols), sec));
+  record.done();
   return 1;
 }
 
 int l_delete_particle(lua_State* L) {
   Scene& s = check_scene(L, "delete_particle");
+  JournalScope record(s, "delete_particle", describe_args(L, 2, lua_gettop(L)));
   s.model.delete_particle(check_particle(L, 2, s, "delete_particle"));
+  record.done();
   return 0;
 }
 
 int l_merge(lua_State* L) {
   Scene& s = check_scene(L, "merge");
+  JournalScope record(s, "merge", describe_args(L, 2, lua_gettop(L)));
   push_particle(L, s, s.model.merge(check_particle_list(L, 2, s, "merge")));
+  record.done();
   return 1;
 }
 
 int l_explode(lua_State* L) {
   Scene& s = check_scene(L, "explode");
+  JournalScope record(s, "explode", describe_args(L, 2, lua_gettop(L)));
   std::vector<ParticleId> out = s.model.explode(check_particle(L, 2, s, "explode"));
   lua_createtable(L, int(out.size()), 0);
   for (std::size_t k = 0; k < out.size(); ++k) {
     push_particle(L, s, out[k]);
     lua_rawseti(L, -2, lua_Integer(k + 1));
   }
+  record.done();
   return 1;
 }
 
 int l_explode_from(lua_State* L) {
   Scene& s = check_scene(L, "explode_from");
+  JournalScope record(s, "explode_from", describe_args(L, 2, lua_gettop(L)));
   ParticleId p = check_particle(L, 2, s, "explode_from");
   BlockId b = check_block(L, 3, s, "explode_from");
   push_particle(L, s, s.model.explode_from(p, b));
+  record.done();
   return 1;
 }
 
 int l_delete(lua_State* L) {
   Scene& s = check_scene(L, "delete");
+  JournalScope record(s, "delete", describe_args(L, 2, lua_gettop(L)));
   BlockId b = check_block(L, 2, s, "delete");
   switch (s.model.blocks[b].kind) {
     case BlockKind::Cable: s.model.delete_cable(b); break;
     case BlockKind::Beam: s.model.delete_beam(b); break;
     case BlockKind::Patch: throw LuaArgError("delete: deleting patches comes with the meshing layer (rule 27)");
   }
+  record.done();
   return 0;
 }
 
 int l_insert(lua_State* L) {
   Scene& s = check_scene(L, "insert");
+  JournalScope record(s, "insert", describe_args(L, 2, lua_gettop(L)));
   ParticleId a = check_particle(L, 2, s, "insert"), b = check_particle(L, 3, s, "insert");
   push_particle(L, s, s.model.insert_particle(a, b));
+  record.done();
   return 1;
 }
 
 int l_remove_from_beam(lua_State* L) {
   Scene& s = check_scene(L, "remove_from_beam");
+  JournalScope record(s, "remove_from_beam", describe_args(L, 2, lua_gettop(L)));
   s.model.remove_from_beam(check_particle(L, 2, s, "remove_from_beam"));
+  record.done();
   return 0;
 }
 
@@ -521,7 +463,26 @@ int l_run(lua_State* L) {
                  static_cast<unsigned long long>(s.solver.steps()), static_cast<unsigned long long>(r.steps),
                  r.residual, s.model.particle_count(), std::chrono::duration<double>(now - start).count());
   };
-  push_run_result(L, s.solver.run(tolerance, cap, progress, 1000));
+  if (s.triggers.empty()) {
+    push_run_result(L, s.solver.run(tolerance, cap, progress, 1000));
+    return 1;
+  }
+  // With triggers, rules run between steps; a rule that changes the model at
+  // equilibrium keeps the run going.
+  RunResult r;
+  while (r.steps < cap) {
+    s.solver.step();
+    ++r.steps;
+    r.residual = s.solver.residual();
+    const bool converged = r.residual < tolerance && s.solver.motion() < tolerance;
+    const bool changed = fire_triggers(L, s, converged);
+    if (converged && !changed) {
+      r.converged = true;
+      break;
+    }
+    if (r.steps % 1000 == 0) progress(r);
+  }
+  push_run_result(L, r);
   return 1;
 }
 
@@ -530,7 +491,10 @@ int l_step(lua_State* L) {
   std::int64_t n = lua_isnoneornil(L, 2) ? 1 : check_integer(L, 2, "step");
   if (n < 0) arg_error("step", 2, "must be >= 0");
   if (s.options->max_steps >= 0) n = std::min(n, s.options->max_steps);
-  for (std::int64_t k = 0; k < n; ++k) s.solver.step();
+  for (std::int64_t k = 0; k < n; ++k) {
+    s.solver.step();
+    if (!s.triggers.empty()) fire_triggers(L, s, false);
+  }
   lua_pushnumber(L, s.solver.residual());
   return 1;
 }
@@ -740,6 +704,7 @@ void register_model_meta(lua_State* L) {
   set_fn<l_check>(L, "check");
   set_fn<l_save>(L, "save");
   set_fn<l_save_obj>(L, "save_obj");
+  add_rule_methods(L);
   lua_setfield(L, -2, "__index");
   lua_pop(L, 1);
   for (const char* meta : {kParticleMeta, kBlockMeta}) {
@@ -763,6 +728,7 @@ void open_tendril(lua_State* L, const SceneOptions& options) {
   set_fn<l_new_model>(L, "model");
   set_fn<l_load>(L, "load");
   set_fn<l_out>(L, "out");
+  add_rule_constructor(L);
   lua_pushinteger(L, options.seed);
   lua_setfield(L, -2, "seed");
   lua_pushstring(L, options.out_dir.c_str());

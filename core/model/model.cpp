@@ -32,6 +32,21 @@ void Model::require_block(BlockId b, const char* what) const {
     throw ModelError(std::string(what) + ": block " + std::to_string(b) + " does not exist (deleted?)");
 }
 
+ParticleId Model::new_particle(const Vec3& x) {
+  ParticleId p = particles.allocate(x);
+  if (changes) changes->created_particles.push_back(p);
+  return p;
+}
+
+void Model::free_particle(ParticleId p) {
+  particles.release(p);
+  if (!changes) return;
+  // A particle born and gone within one record never existed for the journal.
+  auto& born = changes->created_particles;
+  if (auto it = std::find(born.begin(), born.end(), p); it != born.end()) born.erase(it);
+  else changes->deleted_particles.push_back(p);
+}
+
 BlockId Model::new_block(BlockKind k, const Section& s, bool closed) {
   BlockId b;
   if (!free_blocks_.empty()) {
@@ -50,6 +65,7 @@ BlockId Model::new_block(BlockKind k, const Section& s, bool closed) {
   blk.alive = true;
   map.undo_log().scalar(live_blocks_);
   ++live_blocks_;
+  if (changes) changes->created_blocks.push_back(b);
   return b;
 }
 
@@ -60,6 +76,11 @@ void Model::free_block(BlockId b) {
   free_blocks_.push_back(b);
   map.undo_log().scalar(live_blocks_);
   --live_blocks_;
+  if (changes) {
+    auto& born = changes->created_blocks;
+    if (auto it = std::find(born.begin(), born.end(), b); it != born.end()) born.erase(it);
+    else changes->deleted_blocks.push_back(b);
+  }
 }
 
 Dart Model::new_dart(BlockId b, ParticleId p) {

@@ -25,6 +25,16 @@ struct Block {
   std::uint32_t generation = 0;
 };
 
+// What a production created and deleted, collected while a change record is
+// open (the journal's "created and deleted ids").
+struct ChangeSet {
+  std::vector<ParticleId> created_particles, deleted_particles;
+  std::vector<BlockId> created_blocks, deleted_blocks;
+  bool empty() const {
+    return created_particles.empty() && deleted_particles.empty() && created_blocks.empty() && deleted_blocks.empty();
+  }
+};
+
 class Model {
  public:
   Model();
@@ -84,6 +94,9 @@ class Model {
   // Map validity, embeddings, block bookkeeping, and element buffers equal to
   // a fresh rebuild from the map. Empty when valid, else the first violation.
   std::string check() const;
+  // The same checks, around the given particles only (their darts, edges and
+  // hinges): what a production validates, at a cost independent of the model.
+  std::string check_near(const std::vector<ParticleId>& ps) const;
   // Recomputes every element buffer from the map (the approach thesis 6.1
   // criticises; kept to check the local patches and to benchmark them).
   void rebuild_elements();
@@ -96,6 +109,10 @@ class Model {
   void commit_transaction() { map.undo_log().commit(); }
   void rollback_transaction() { map.undo_log().rollback(); }
   bool in_transaction() { return map.undo_log().recording(); }
+
+  // While `changes` points somewhere, particle and block creation and
+  // deletion are appended to it.
+  ChangeSet* changes = nullptr;
 
   GMap map;
   Particles particles;
@@ -117,6 +134,8 @@ class Model {
   void require_block(BlockId b, const char* what) const;
 
  private:
+  ParticleId new_particle(const Vec3& x);
+  void free_particle(ParticleId p);
   BlockId new_block(BlockKind k, const Section& s, bool closed);
   void free_block(BlockId b);
   Dart new_dart(BlockId b, ParticleId p);
@@ -133,6 +152,7 @@ class Model {
   void remove_hinge(Dart d);
   void refresh_hinge(Dart d);  // re-reads i, j, k of the hinge at vertex d, if any
   void refresh_vertex(Dart d);  // after re-embedding d: its bar and nearby hinges
+  std::string check_dart(Dart d) const;
   Dart find_edge(ParticleId a, ParticleId b, BlockKind k) const;
   std::vector<Dart> darts_of(ParticleId p) const;
   void delete_component(BlockId b);

@@ -19,7 +19,7 @@ std::string pid(ParticleId p) { return std::to_string(p); }
 
 ParticleId Model::add_particle(const Vec3& x) {
   if (!x.allFinite()) throw ModelError("add_particle: position is not finite");
-  return particles.allocate(x);
+  return new_particle(x);
 }
 
 void Model::delete_particle(ParticleId p) {
@@ -27,7 +27,7 @@ void Model::delete_particle(ParticleId p) {
   if (particles.degree[p] != 0)
     throw ModelError("delete_particle: particle " + pid(p) + " is not isolated (state " +
                      state_name(state(p)) + "); delete or explode its blocks first");
-  particles.release(p);
+  free_particle(p);
 }
 
 ParticleId Model::merge(const std::vector<ParticleId>& ps) {
@@ -67,7 +67,7 @@ ParticleId Model::merge(const std::vector<ParticleId>& ps) {
     point_mass += particles.point_mass[p];
   }
   const double n = static_cast<double>(set.size());
-  ParticleId q = particles.allocate(x / n);
+  ParticleId q = new_particle(x / n);
   particles.velocity[q] = v / n;
   particles.load[q] = load;
   particles.lock[q] = lock;
@@ -78,7 +78,7 @@ ParticleId Model::merge(const std::vector<ParticleId>& ps) {
       embed(d, q);
       refresh_vertex(d);
     }
-    particles.release(p);
+    free_particle(p);
   }
   return q;
 }
@@ -92,7 +92,7 @@ std::vector<ParticleId> Model::explode(ParticleId p) {
                      " block(s); only shared particles explode");
   std::vector<ParticleId> out;
   for (BlockId b : bs) {
-    ParticleId q = particles.allocate(particles.position[p]);
+    ParticleId q = new_particle(particles.position[p]);
     particles.velocity[q] = particles.velocity[p];
     particles.lock[q] = particles.lock[p];
     if (out.empty()) {  // the particle's own load and mass go to the first block
@@ -107,7 +107,7 @@ std::vector<ParticleId> Model::explode(ParticleId p) {
     }
     out.push_back(q);
   }
-  particles.release(p);
+  free_particle(p);
   return out;
 }
 
@@ -120,7 +120,7 @@ ParticleId Model::explode_from(ParticleId p, BlockId b) {
     throw ModelError("explode_from: particle " + pid(p) + " is not shared");
   if (!std::binary_search(bs.begin(), bs.end(), b))
     throw ModelError("explode_from: particle " + pid(p) + " is not on block " + std::to_string(b));
-  ParticleId q = particles.allocate(particles.position[p]);
+  ParticleId q = new_particle(particles.position[p]);
   particles.velocity[q] = particles.velocity[p];
   particles.lock[q] = particles.lock[p];
   for (Dart d : darts_of(p)) {
@@ -184,7 +184,7 @@ void Model::delete_component(BlockId b) {
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   for (ParticleId p : touched)
-    if (particles.degree[p] == 0) particles.release(p);  // rule 2 on what is left isolated
+    if (particles.degree[p] == 0) free_particle(p);  // rule 2 on what is left isolated
 }
 
 // --- beams -------------------------------------------------------------------
@@ -239,7 +239,7 @@ BlockId Model::add_beam_from(ParticleId start, const Vec3& span, int segments, c
       throw ModelError("beam_from: the segments are too short to tell their ends apart at this position");
   }
   std::vector<ParticleId> ps{start};
-  for (int k = 1; k <= segments; ++k) ps.push_back(particles.allocate(points[k]));
+  for (int k = 1; k <= segments; ++k) ps.push_back(new_particle(points[k]));
   return add_beam(ps, s, false);
 }
 
@@ -262,7 +262,7 @@ ParticleId Model::insert_particle(ParticleId a, ParticleId b) {
   const double half = 0.5 * rest_length[d];
   remove_bar(d);
   map.unlink(0, d);
-  ParticleId q = particles.allocate(0.5 * (particles.position[a] + particles.position[b]));
+  ParticleId q = new_particle(0.5 * (particles.position[a] + particles.position[b]));
   particles.velocity[q] = 0.5 * (particles.velocity[a] + particles.velocity[b]);
   Dart d2 = new_dart(blk, q), e2 = new_dart(blk, q);
   map.link(0, d, d2);
@@ -319,7 +319,7 @@ void Model::remove_from_beam(ParticleId p) {
     free_dart(a);
     if (block.dart == kNoDart) block.dart = a1;  // the start end went: a1 starts the path now
   }
-  particles.release(p);
+  free_particle(p);
 }
 
 void Model::delete_beam(BlockId b) {
