@@ -3,11 +3,16 @@
 #include <lua.hpp>
 
 #include <cstdio>
+#include <cstring>
 #include <memory>
 
 #include "lua_model.hpp"
 
 namespace tendril {
+
+namespace lua {
+extern const char* const kRuleLibrary;  // rule_library.cpp, generated
+}
 
 namespace {
 int traceback(lua_State* L) {
@@ -36,6 +41,9 @@ int run_scene(const std::string& path, const SceneOptions& options, std::string*
   lua_pop(L, 1);
   lua::open_tendril(L, options);
   lua_setglobal(L, "tendril");
+  if (luaL_loadbuffer(L, lua::kRuleLibrary, std::strlen(lua::kRuleLibrary), "=rules/library.lua") != LUA_OK ||
+      lua_pcall(L, 0, 0, 0) != LUA_OK)
+    return fail(lua_tostring(L, -1));
 
   lua_pushcfunction(L, traceback);
   if (luaL_loadfile(L, path.c_str()) != LUA_OK) return fail(lua_tostring(L, -1));

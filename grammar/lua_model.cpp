@@ -566,6 +566,12 @@ int l_kind(lua_State* L) {
   return 1;
 }
 
+int l_closed(lua_State* L) {
+  Scene& s = check_scene(L, "closed");
+  lua_pushboolean(L, s.model.blocks[check_block(L, 2, s, "closed")].closed);
+  return 1;
+}
+
 int l_count(lua_State* L) {
   Scene& s = check_scene(L, "count");
   const Model& m = s.model;
@@ -697,6 +703,7 @@ void register_model_meta(lua_State* L) {
   set_fn<l_blocks>(L, "blocks");
   set_fn<l_particles>(L, "particles");
   set_fn<l_kind>(L, "kind");
+  set_fn<l_closed>(L, "closed");
   set_fn<l_count>(L, "count");
   set_fn<l_residual>(L, "residual");
   set_fn<l_steps>(L, "steps");

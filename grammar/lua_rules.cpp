@@ -60,6 +60,7 @@ std::string call(lua_State* L, int fn_idx, int first_arg, int nargs, int nresult
 struct Outcome {
   bool applied = false;
   std::string message;
+  int results = 0;  // values the production returned, left on the stack
 };
 
 // The transaction around one rule application (DESIGN principle 2).
@@ -72,10 +73,14 @@ Outcome apply_rule(lua_State* L, Scene& s, int rule_idx, int first_arg, int narg
     // A rule applied from inside another rule's production joins its
     // transaction: any failure rolls back the outer application as a whole.
     lua_getfield(L, rule_idx, "production");
-    std::string err = call(L, -1, first_arg, nargs, 0);
-    lua_pop(L, 1);
-    if (!err.empty()) throw LuaArgError("rule '" + name + "' failed: " + err);
-    return {true, ""};
+    const int base = lua_gettop(L);
+    std::string err = call(L, base, first_arg, nargs, LUA_MULTRET);
+    if (!err.empty()) {
+      lua_pop(L, 1);
+      throw LuaArgError("rule '" + name + "' failed: " + err);
+    }
+    lua_remove(L, base);
+    return {true, "", lua_gettop(L) - base + 1};
   }
   JournalEntry entry;
   entry.step = s.solver.steps();
@@ -104,21 +109,28 @@ Outcome apply_rule(lua_State* L, Scene& s, int rule_idx, int first_arg, int narg
     lua_pop(L, 1);
   }
   lua_getfield(L, rule_idx, "production");
-  std::string err = call(L, -1, first_arg, nargs, 0);
-  lua_pop(L, 1);
-  if (!err.empty()) return abandon("rule '" + name + "' failed and was rolled back: " + err);
+  const int base = lua_gettop(L);
+  std::string err = call(L, base, first_arg, nargs, LUA_MULTRET);
+  if (!err.empty()) {
+    lua_pop(L, 1);
+    return abandon("rule '" + name + "' failed and was rolled back: " + err);
+  }
+  lua_remove(L, base);
+  const int results = lua_gettop(L) - base + 1;
   // Validate around what the production created and what it was given.
   std::vector<ParticleId> near = entry.changes.created_particles;
   for (int k = 0; k < nargs; ++k) {
     auto* h = static_cast<Handle*>(luaL_testudata(L, first_arg + k, kParticleMeta));
     if (h) near.push_back(h->id);
   }
-  if (std::string broken = m.check_near(near); !broken.empty())
+  if (std::string broken = m.check_near(near); !broken.empty()) {
+    lua_pop(L, results);
     return abandon("rule '" + name + "' broke an invariant and was rolled back: " + broken);
+  }
   m.commit_transaction();
   m.changes = nullptr;
   s.journal.entries.push_back(std::move(entry));
-  return {true, ""};
+  return {true, "", results};
 }
 
 // --- tendril.rule{name =, axiom =, production =} --------------------------------
@@ -160,8 +172,12 @@ int l_apply(lua_State* L) {
   Scene& s = check_scene(L, "apply");
   check_rule(L, 2, "apply");
   Outcome out = apply_rule(L, s, 2, 3, lua_gettop(L) - 2);
-  lua_pushboolean(L, out.applied);
-  if (out.applied) return 1;
+  if (out.applied) {  // true, then what the production returned
+    lua_pushboolean(L, 1);
+    lua_insert(L, -out.results - 1);
+    return out.results + 1;
+  }
+  lua_pushboolean(L, 0);
   lua_pushstring(L, out.message.c_str());
   return 2;
 }

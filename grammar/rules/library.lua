@@ -1,0 +1,141 @@
+-- The built-in rules of thesis 4.2.7, as tendril.rules.<key>. Each is an
+-- ordinary rule (tendril.rule): its axiom judges states and topology, its
+-- production calls the model's primitive operations.
+local rules = {}
+
+local function define(key, name, axiom, production)
+  rules[key] = tendril.rule{ name = name, axiom = axiom, production = production }
+end
+
+local function state_is(m, p, ...)
+  local s = m:state(p)
+  for _, wanted in ipairs{ ... } do
+    if s == wanted then return true end
+  end
+  return false, string.format("particle %d is %s", p.id, s)
+end
+
+local function kind_is(m, b, wanted)
+  local k = m:kind(b)
+  return k == wanted, string.format("block %d is a %s, not a %s", b.id, k, wanted)
+end
+
+local function on_beam(m, p)
+  for _, b in ipairs(m:blocks(p)) do
+    if m:kind(b) == "beam" then return b end
+  end
+end
+
+-- Particles ------------------------------------------------------------------
+
+define("add_particle", "rule 1: add a particle", nil,
+  function(m, xyz) return m:particle(xyz) end)
+
+define("delete_particle", "rule 2: delete an isolated particle",
+  function(m, p) return state_is(m, p, "isolated") end,
+  function(m, p) m:delete_particle(p) end)
+
+define("merge", "rule 3: merge particles",
+  function(m, ps)
+    if #ps < 2 then return false, "needs at least two particles" end
+    for _, p in ipairs(ps) do
+      local ok, why = state_is(m, p, "simple", "shared", "lock", "full-lock")
+      if not ok then return false, why end
+    end
+    return true
+  end,
+  function(m, ps) return m:merge(ps) end)
+
+define("explode", "rule 4: explode a shared particle",
+  function(m, p)
+    local n = #m:blocks(p)
+    if m:state(p) == "passive" then return false, "particle is passive" end
+    return n >= 2, string.format("particle %d is on %d block(s)", p.id, n)
+  end,
+  function(m, p) return m:explode(p) end)
+
+define("explode_from", "rule 5: explode a particle from one block",
+  function(m, p, b)
+    local bs = m:blocks(p)
+    if #bs < 2 or m:state(p) == "passive" then return false, string.format("particle %d is not shared", p.id) end
+    for _, x in ipairs(bs) do
+      if x == b then return true end
+    end
+    return false, string.format("particle %d is not on block %d", p.id, b.id)
+  end,
+  function(m, p, b) return m:explode_from(p, b) end)
+
+-- Cables ---------------------------------------------------------------------
+
+define("cable", "rule 6: create a cable", nil,
+  function(m, a, b, section) return m:cable(a, b, section) end)
+
+define("delete_cable", "rule 7: delete a cable",
+  function(m, c) return kind_is(m, c, "cable") end,
+  function(m, c) m:delete(c) end)
+
+-- Beams ----------------------------------------------------------------------
+
+define("beam", "rule 8: a spline beam through particles",
+  function(m, options)
+    return options.particles ~= nil and #options.particles >= 2, "needs a list of at least two particles"
+  end,
+  function(m, options) return m:beam(options) end)
+
+define("beam_from", "rule 10: a spline beam from a particle, a direction and subdivisions", nil,
+  function(m, p, direction, segments, section)
+    local options = { from = p, direction = direction, segments = segments }
+    for k, v in pairs(section) do options[k] = v end
+    return m:beam(options)
+  end)
+
+define("remove_simple", "rule 11: delete a simple particle of a beam",
+  function(m, p)
+    local ok, why = state_is(m, p, "simple")
+    if not ok then return false, why end
+    return on_beam(m, p) ~= nil, string.format("particle %d is not on a beam", p.id)
+  end,
+  function(m, p) m:remove_from_beam(p) end)
+
+define("remove_shared", "rule 12: delete a shared particle of a beam",
+  function(m, p, beam)
+    local ok, why = state_is(m, p, "shared")
+    if not ok then return false, why end
+    return kind_is(m, beam, "beam")
+  end,
+  function(m, p, beam)
+    local q = m:explode_from(p, beam)   -- rule 5, then rule 11 on the beam's copy
+    m:remove_from_beam(q)
+  end)
+
+define("insert", "rule 13: add a particle between two consecutive beam particles", nil,
+  function(m, a, b) return m:insert(a, b) end)
+
+define("subdivide", "rule 14: subdivide a spline beam",
+  function(m, beam) return kind_is(m, beam, "beam") end,
+  function(m, beam)
+    local ps = m:particles(beam)
+    for i = 1, #ps - 1 do m:insert(ps[i], ps[i + 1]) end
+    if m:closed(beam) then m:insert(ps[#ps], ps[1]) end
+  end)
+
+define("unsubdivide", "rule 15: inverse subdivision of a spline beam",
+  function(m, beam)
+    local ok, why = kind_is(m, beam, "beam")
+    if not ok then return false, why end
+    local ps = m:particles(beam)
+    for i = 2, #ps - 1, 2 do
+      if m:state(ps[i]) ~= "simple" then return false, string.format("particle %d is %s", ps[i].id, m:state(ps[i])) end
+    end
+    return #ps >= 3, "the beam has no interior particle"
+  end,
+  function(m, beam)
+    local ps = m:particles(beam)
+    for i = 2, #ps - 1, 2 do m:remove_from_beam(ps[i]) end
+  end)
+
+define("delete_beam", "rule 18: delete a spline beam",
+  function(m, beam) return kind_is(m, beam, "beam") end,
+  function(m, beam) m:delete(beam) end)
+
+tendril.rules = rules
