@@ -138,4 +138,37 @@ define("delete_beam", "rule 18: delete a spline beam",
   function(m, beam) return kind_is(m, beam, "beam") end,
   function(m, beam) m:delete(beam) end)
 
+-- Looped typologies (thesis fig. 6.10): a beam connected to itself --------------
+
+local function open_beam(m, beam, at_least)
+  local ok, why = kind_is(m, beam, "beam")
+  if not ok then return false, why end
+  if m:closed(beam) then return false, string.format("beam %d is already a ring", beam.id) end
+  local n = #m:particles(beam)
+  return n >= at_least, string.format("beam %d has %d particles, needs %d", beam.id, n, at_least)
+end
+
+define("ring_loop", "closed ring: first two particles onto the last two, ascending",
+  function(m, beam) return open_beam(m, beam, 5) end,
+  function(m, beam)
+    local ps = m:particles(beam)
+    local n = #ps
+    return m:merge{ ps[1], ps[n - 1] }, m:merge{ ps[2], ps[n] }
+  end)
+
+define("drop_single", "drop-like loop with a single joint: both ends together",
+  function(m, beam) return open_beam(m, beam, 4) end,
+  function(m, beam)
+    local ps = m:particles(beam)
+    return m:merge{ ps[1], ps[#ps] }
+  end)
+
+define("drop_double", "drop-like loop with a double joint: first two onto the last two, inverse",
+  function(m, beam) return open_beam(m, beam, 6) end,
+  function(m, beam)
+    local ps = m:particles(beam)
+    local n = #ps
+    return m:merge{ ps[1], ps[n] }, m:merge{ ps[2], ps[n - 1] }
+  end)
+
 tendril.rules = rules
