@@ -121,6 +121,15 @@ void apply_settings(lua_State* L, int idx, Scene& s, const char* fn) {
   st.mass_factor = field_number(L, idx, "mass_factor", fn, st.mass_factor);
   if (!(st.mass_factor >= 1)) key_error(fn, "mass_factor", "must be >= 1");
   if (has_field(L, idx, "gravity")) s.model.gravity = field_vec3(L, idx, "gravity", fn);
+  const std::string integrator = field_string(L, idx, "integrator", fn, integrator_name(st.integrator));
+  if (auto i = parse_integrator(integrator)) st.integrator = *i;
+  else
+    key_error(fn, "integrator",
+              "must be \"leapfrog\", \"symplectic_euler\", \"velocity_verlet\", \"midpoint\" or \"rk4\", got \"" +
+                  integrator + "\"");
+  const std::string mass_mode = field_string(L, idx, "mass_mode", fn, mass_mode_name(st.mass_mode));
+  if (auto m = parse_mass_mode(mass_mode)) st.mass_mode = *m;
+  else key_error(fn, "mass_mode", "must be \"fictitious\" or \"physical\", got \"" + mass_mode + "\"");
 }
 
 Scene& push_new_scene(lua_State* L) {
@@ -132,6 +141,24 @@ Scene& push_new_scene(lua_State* L) {
   return **slot;
 }
 
+std::string ids_line(const std::vector<ParticleId>& ps) {
+  std::string out;
+  for (ParticleId p : ps) out += " " + std::to_string(p);
+  return out;
+}
+
+std::string beam_line(const std::vector<ParticleId>& ps, const Section& sec, bool closed) {
+  return std::string("beam ") + (closed ? "1 " : "0 ") + Trace::section(sec) + ids_line(ps);
+}
+
+void record_settings(Scene& s) {
+  const SolverSettings& st = s.solver.settings;
+  s.record(std::string("settings dt=") + Trace::number(st.dt) + " damping=" + damping_name(st.damping) +
+           " viscous=" + Trace::number(st.viscous) + " geometric_factor=" + Trace::number(st.geometric_factor) +
+           " mass_factor=" + Trace::number(st.mass_factor));
+  s.record("gravity " + Trace::vec(s.model.gravity));
+}
+
 // --- tendril.* ------------------------------------------------------------------
 
 int l_new_model(lua_State* L) {
@@ -139,10 +166,13 @@ int l_new_model(lua_State* L) {
   const bool has_options = !lua_isnoneornil(L, 1);
   if (has_options) {
     check_table(L, 1, fn);
-    check_keys(L, 1, fn, {"dt", "damping", "viscous", "geometric_factor", "mass_factor", "gravity"});
+    check_keys(L, 1, fn, {"dt", "damping", "viscous", "geometric_factor", "mass_factor", "gravity", "integrator", "mass_mode"});
   }
   Scene& s = push_new_scene(L);
-  if (has_options) apply_settings(L, 1, s, fn);
+  if (has_options) {
+    apply_settings(L, 1, s, fn);
+    record_settings(s);
+  }
   return 1;
 }
 
@@ -152,6 +182,7 @@ int l_load(lua_State* L) {
   std::string path = lua_tostring(L, 1);
   Scene& s = push_new_scene(L);
   load_model_xml(path, s.model, s.solver.settings);
+  s.record("open " + path);
   return 1;
 }
 
@@ -179,6 +210,7 @@ int l_particle(lua_State* L) {
   JournalScope record(s, "particle", describe_args(L, 2, lua_gettop(L)));
   Vec3 x = check_vec3(L, 2, "particle");
   push_particle(L, s, s.model.add_particle(x));
+  s.record("particle " + Trace::vec(x));
   record.done();
   return 1;
 }
@@ -194,6 +226,7 @@ int l_cable(lua_State* L) {
   double rest = field_number(L, 4, "rest_length", fn, 0);
   if (has_field(L, 4, "rest_length") && !(rest > 0)) key_error(fn, "rest_length", "must be > 0");
   push_block(L, s, s.model.add_cable(a, b, sec, rest));
+  s.record("cable " + std::to_string(a) + " " + std::to_string(b) + " " + Trace::section(sec) + " " + Trace::number(rest));
   record.done();
   return 1;
 }
@@ -217,8 +250,12 @@ int l_beam(lua_State* L) {
     double seg = field_number(L, 2, "segments", fn, 0);
     if (seg != std::floor(seg) || seg < 1) key_error(fn, "segments", "must be an integer >= 1");
     b = s.model.add_beam_from(start, dir, int(seg), sec);
+    s.record("beam_from " + std::to_string(start) + " " + Trace::vec(dir) + " " + std::to_string(int(seg)) + " " +
+             Trace::section(sec));
   } else if (has_field(L, 2, "particles")) {
-    b = s.model.add_beam(field_particle_list(L, 2, "particles", s, fn), sec, closed);
+    const std::vector<ParticleId> ps = field_particle_list(L, 2, "particles", s, fn);
+    b = s.model.add_beam(ps, sec, closed);
+    s.record(beam_line(ps, sec, closed));
   } else {
     lua_getfield(L, 2, "points");
     const int t = lua_gettop(L);
@@ -249,6 +286,8 @@ int l_beam(lua_State* L) {
       for (ParticleId p : ps) s.model.delete_particle(p);
       throw;
     }
+    for (const Vec3& x : pts) s.record("particle " + Trace::vec(x));
+    s.record(beam_line(ps, sec, closed));
   }
   push_block(L, s, b);
   record.done();
@@ -263,7 +302,9 @@ int l_quad_grid(lua_State* L) {
   check_keys(L, 2, fn, {"particles", "rows", "cols", "EA", "E", "A", "prestress", "line_mass"});
   Section sec = read_section(L, 2, fn, false);
   const double rows = field_number(L, 2, "rows", fn, 0), cols = field_number(L, 2, "cols", fn, 0);
-  push_block(L, s, s.model.add_quad_grid(field_particle_list(L, 2, "particles", s, fn), int(rows), int(cols), sec));
+  const std::vector<ParticleId> ps = field_particle_list(L, 2, "particles", s, fn);
+  push_block(L, s, s.model.add_quad_grid(ps, int(rows), int(cols), sec));
+  s.record("quad_grid " + std::to_string(int(rows)) + " " + std::to_string(int(cols)) + " " + Trace::section(sec) + ids_line(ps));
   record.done();
   return 1;
 }
@@ -271,7 +312,9 @@ int l_quad_grid(lua_State* L) {
 int l_delete_particle(lua_State* L) {
   Scene& s = check_scene(L, "delete_particle");
   JournalScope record(s, "delete_particle", describe_args(L, 2, lua_gettop(L)));
-  s.model.delete_particle(check_particle(L, 2, s, "delete_particle"));
+  const ParticleId p = check_particle(L, 2, s, "delete_particle");
+  s.model.delete_particle(p);
+  s.record("delete_particle " + std::to_string(p));
   record.done();
   return 0;
 }
@@ -279,7 +322,9 @@ int l_delete_particle(lua_State* L) {
 int l_merge(lua_State* L) {
   Scene& s = check_scene(L, "merge");
   JournalScope record(s, "merge", describe_args(L, 2, lua_gettop(L)));
-  push_particle(L, s, s.model.merge(check_particle_list(L, 2, s, "merge")));
+  const std::vector<ParticleId> ps = check_particle_list(L, 2, s, "merge");
+  push_particle(L, s, s.model.merge(ps));
+  s.record("merge" + ids_line(ps));
   record.done();
   return 1;
 }
@@ -287,7 +332,9 @@ int l_merge(lua_State* L) {
 int l_explode(lua_State* L) {
   Scene& s = check_scene(L, "explode");
   JournalScope record(s, "explode", describe_args(L, 2, lua_gettop(L)));
-  std::vector<ParticleId> out = s.model.explode(check_particle(L, 2, s, "explode"));
+  const ParticleId p = check_particle(L, 2, s, "explode");
+  std::vector<ParticleId> out = s.model.explode(p);
+  s.record("explode " + std::to_string(p));
   lua_createtable(L, int(out.size()), 0);
   for (std::size_t k = 0; k < out.size(); ++k) {
     push_particle(L, s, out[k]);
@@ -303,6 +350,7 @@ int l_explode_from(lua_State* L) {
   ParticleId p = check_particle(L, 2, s, "explode_from");
   BlockId b = check_block(L, 3, s, "explode_from");
   push_particle(L, s, s.model.explode_from(p, b));
+  s.record("explode_from " + std::to_string(p) + " " + std::to_string(b));
   record.done();
   return 1;
 }
@@ -316,6 +364,7 @@ int l_delete(lua_State* L) {
     case BlockKind::Beam: s.model.delete_beam(b); break;
     case BlockKind::Patch: throw LuaArgError("delete: deleting patches comes with the meshing layer (rule 27)");
   }
+  s.record("delete " + std::to_string(b));
   record.done();
   return 0;
 }
@@ -325,6 +374,7 @@ int l_insert(lua_State* L) {
   JournalScope record(s, "insert", describe_args(L, 2, lua_gettop(L)));
   ParticleId a = check_particle(L, 2, s, "insert"), b = check_particle(L, 3, s, "insert");
   push_particle(L, s, s.model.insert_particle(a, b));
+  s.record("insert " + std::to_string(a) + " " + std::to_string(b));
   record.done();
   return 1;
 }
@@ -332,7 +382,9 @@ int l_insert(lua_State* L) {
 int l_remove_from_beam(lua_State* L) {
   Scene& s = check_scene(L, "remove_from_beam");
   JournalScope record(s, "remove_from_beam", describe_args(L, 2, lua_gettop(L)));
-  s.model.remove_from_beam(check_particle(L, 2, s, "remove_from_beam"));
+  const ParticleId p = check_particle(L, 2, s, "remove_from_beam");
+  s.model.remove_from_beam(p);
+  s.record("remove_from_beam " + std::to_string(p));
   record.done();
   return 0;
 }
@@ -346,6 +398,7 @@ int l_lock(lua_State* L) {
     axes = lua_tostring(L, 3);
   }
   s.model.set_lock(p, s.model.particles.lock[p] | parse_axes(axes, "lock"));
+  s.record("lock " + std::to_string(p) + " " + std::to_string(int(s.model.particles.lock[p])));
   return 0;
 }
 
@@ -358,6 +411,7 @@ int l_unlock(lua_State* L) {
     bits = parse_axes(lua_tostring(L, 3), "unlock");
   }
   s.model.set_lock(p, s.model.particles.lock[p] & ~bits);
+  s.record("lock " + std::to_string(p) + " " + std::to_string(int(s.model.particles.lock[p])));
   return 0;
 }
 
@@ -370,7 +424,9 @@ int l_locks(lua_State* L) {
 int l_load_force(lua_State* L) {
   Scene& s = check_scene(L, "load");
   ParticleId p = check_particle(L, 2, s, "load");
-  s.model.set_load(p, check_vec3(L, 3, "load"));
+  const Vec3 f = check_vec3(L, 3, "load");
+  s.model.set_load(p, f);
+  s.record("load " + std::to_string(p) + " " + Trace::vec(f));
   return 0;
 }
 
@@ -381,7 +437,9 @@ int l_mass(lua_State* L) {
     lua_pushnumber(L, s.model.particles.mass(p));
     return 1;
   }
-  s.model.set_point_mass(p, check_number(L, 3, "mass"));
+  const double kg = check_number(L, 3, "mass");
+  s.model.set_point_mass(p, kg);
+  s.record("mass " + std::to_string(p) + " " + Trace::number(kg));
   return 0;
 }
 
@@ -390,6 +448,7 @@ int l_passive(lua_State* L) {
   ParticleId p = check_particle(L, 2, s, "passive");
   if (!lua_isboolean(L, 3)) arg_error("passive", 3, "expected true or false");
   s.model.set_passive(p, lua_toboolean(L, 3));
+  s.record("passive " + std::to_string(p) + (lua_toboolean(L, 3) ? " 1" : " 0"));
   return 0;
 }
 
@@ -400,6 +459,7 @@ int l_gravity(lua_State* L) {
     return 1;
   }
   s.model.gravity = check_vec3(L, 2, "gravity");
+  s.record("gravity " + Trace::vec(s.model.gravity));
   return 0;
 }
 
@@ -408,11 +468,12 @@ int l_settings(lua_State* L) {
   Scene& s = check_scene(L, fn);
   if (!lua_isnoneornil(L, 2)) {
     check_table(L, 2, fn);
-    check_keys(L, 2, fn, {"dt", "damping", "viscous", "geometric_factor", "mass_factor", "gravity"});
+    check_keys(L, 2, fn, {"dt", "damping", "viscous", "geometric_factor", "mass_factor", "gravity", "integrator", "mass_mode"});
     apply_settings(L, 2, s, fn);
+    record_settings(s);
   }
   const SolverSettings& st = s.solver.settings;
-  lua_createtable(L, 0, 6);
+  lua_createtable(L, 0, 8);
   lua_pushnumber(L, st.dt);
   lua_setfield(L, -2, "dt");
   lua_pushstring(L, damping_name(st.damping));
@@ -425,6 +486,10 @@ int l_settings(lua_State* L) {
   lua_setfield(L, -2, "mass_factor");
   push_vec3(L, s.model.gravity);
   lua_setfield(L, -2, "gravity");
+  lua_pushstring(L, integrator_name(st.integrator));
+  lua_setfield(L, -2, "integrator");
+  lua_pushstring(L, mass_mode_name(st.mass_mode));
+  lua_setfield(L, -2, "mass_mode");
   return 1;
 }
 
@@ -508,7 +573,9 @@ int l_position(lua_State* L) {
 int l_set_position(lua_State* L) {
   Scene& s = check_scene(L, "set_position");
   ParticleId p = check_particle(L, 2, s, "set_position");
-  s.model.particles.position[p] = check_vec3(L, 3, "set_position");
+  const Vec3 x = check_vec3(L, 3, "set_position");
+  s.model.particles.position[p] = x;
+  s.record("position " + std::to_string(p) + " " + Trace::vec(x));
   return 0;
 }
 

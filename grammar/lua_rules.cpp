@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <memory>
+#include <sstream>
 
 #include "lua_args.hpp"
 
@@ -87,10 +88,12 @@ Outcome apply_rule(lua_State* L, Scene& s, int rule_idx, int first_arg, int narg
   entry.time = s.solver.time();
   entry.rule = name;
   entry.args = describe_args(L, first_arg, first_arg + nargs - 1);
+  const Trace::Mark mark = s.trace.mark();
   m.begin_transaction();
   m.changes = &entry.changes;
   auto abandon = [&](std::string message) {
     m.rollback_transaction();
+    s.trace.rewind(mark);
     m.changes = nullptr;
     return Outcome{false, std::move(message)};
   };
@@ -264,8 +267,12 @@ int l_assembly(lua_State* L) {
 int l_save_journal(lua_State* L) {
   Scene& s = check_scene(L, "save_journal");
   if (lua_type(L, 2) != LUA_TSTRING) arg_error("save_journal", 2, "expected a file name");
+  // The assembly sequence as comments, then the replayable trace.
   std::ofstream out(lua_tostring(L, 2));
-  out << s.journal.assembly_sequence();
+  out << "# tendril journal 1: replay with `tendril replay FILE`\n";
+  std::istringstream table(s.journal.assembly_sequence());
+  for (std::string line; std::getline(table, line);) out << "# " << line << "\n";
+  for (const std::string& line : s.trace.lines(s.solver)) out << line << "\n";
   if (!out) throw ModelError(std::string("save_journal: cannot write ") + lua_tostring(L, 2));
   return 0;
 }

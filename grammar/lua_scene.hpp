@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "lua_host.hpp"
+#include "io/trace.hpp"
 #include "model/journal.hpp"
 #include "model/model.hpp"
 #include "physics/solver.hpp"
@@ -23,6 +24,8 @@ struct Scene {
   Model model;
   Solver solver{model};
   Journal journal;
+  Trace trace;  // the replayable record of every change (io/trace.hpp)
+  void record(const std::string& line) { trace.record(solver, line); }
   std::vector<Trigger*> triggers;  // owned by lua_rules.cpp, freed with the scene
   const SceneOptions* options = nullptr;
   ~Scene();

@@ -1,0 +1,53 @@
+#pragma once
+// The replayable half of the journal: every change a scene made to a model,
+// primitive by primitive, with the solver steps in between, as text lines
+// with exact (hexadecimal) numbers. Replaying it on an empty model gives the
+// same model bit for bit, because every operation and step is deterministic.
+//
+//   particle X Y Z               beam CLOSED EA EI T0 MASS P0 P1 ...
+//   cable A B EA EI T0 MASS REST beam_from P DX DY DZ N EA EI T0 MASS
+//   quad_grid ROWS COLS EA EI T0 MASS P...   patch EA EI T0 MASS A B C D ...
+//   delete_particle P  merge P...  explode P  explode_from P B  delete B
+//   insert A B  remove_from_beam P  lock P BITS  passive P 0|1  load P X Y Z
+//   mass P KG  position P X Y Z  gravity X Y Z  settings KEY=VALUE ...
+//   steps N   open PATH (a model database)   # comment
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "model/model.hpp"
+#include "physics/solver.hpp"
+
+namespace tendril {
+
+class Trace {
+ public:
+  // Records one operation line; solver steps taken since the last line are
+  // written first as "steps N".
+  void record(const Solver& s, const std::string& line);
+  // Lines recorded after a mark are dropped by rewind (a rolled-back production).
+  struct Mark {
+    std::size_t lines;
+    std::uint64_t steps;
+  };
+  Mark mark() const { return {lines_.size(), traced_steps_}; }
+  void rewind(Mark m) {
+    lines_.resize(m.lines);
+    traced_steps_ = m.steps;
+  }
+  // All lines, with the steps still pending at `s`.
+  std::vector<std::string> lines(const Solver& s) const;
+
+  static std::string number(double x);  // exact: "%a"
+  static std::string vec(const Vec3& v);
+  static std::string section(const Section& s);
+
+ private:
+  std::vector<std::string> lines_;
+  std::uint64_t traced_steps_ = 0;
+};
+
+// Runs a trace on an empty model. Throws ModelError naming the line at fault.
+void replay_trace(std::istream& in, const std::string& name, Model& m, Solver& s);
+
+}  // namespace tendril
