@@ -452,6 +452,21 @@ int l_passive(lua_State* L) {
   return 0;
 }
 
+int l_role(lua_State* L) {
+  Scene& s = check_scene(L, "role");
+  ParticleId p = check_particle(L, 2, s, "role");
+  if (lua_isnoneornil(L, 3)) {
+    lua_pushstring(L, role_name(Role(s.model.particles.role[p])));
+    return 1;
+  }
+  Role r;
+  if (lua_type(L, 3) != LUA_TSTRING || !parse_role(lua_tostring(L, 3), r))
+    arg_error("role", 3, "expected \"parent\", \"child\", \"volatile\" or \"none\"");
+  s.model.set_role(p, r);
+  s.record("role " + std::to_string(p) + " " + std::to_string(int(r)));
+  return 0;
+}
+
 int l_gravity(lua_State* L) {
   Scene& s = check_scene(L, "gravity");
   if (lua_isnoneornil(L, 2)) {
@@ -759,6 +774,7 @@ void register_model_meta(lua_State* L) {
   set_fn<l_mass>(L, "mass");
   set_fn<l_passive>(L, "passive");
   set_fn<l_gravity>(L, "gravity");
+  set_fn<l_role>(L, "role");
   set_fn<l_settings>(L, "settings");
   set_fn<l_run>(L, "run");
   set_fn<l_step>(L, "step");

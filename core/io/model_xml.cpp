@@ -205,6 +205,7 @@ std::string write_document(const Model& m, const SolverSettings& s) {
     w.attr("vz", ps.velocity[p].z());
     w.attr("lock", unsigned(ps.lock[p]));
     w.attr("passive", unsigned(ps.passive[p] ? 1 : 0));
+    w.attr("role", unsigned(ps.role[p]));
     w.attr("point_mass", ps.point_mass[p]);
     w.attr("fx", ps.load[p].x());
     w.attr("fy", ps.load[p].y());
@@ -296,6 +297,7 @@ struct ParticleRecord {
   Vec3 x = Vec3::Zero(), v = Vec3::Zero(), load = Vec3::Zero();
   unsigned lock = 0;
   bool passive = false;
+  unsigned role = 0;
   double point_mass = 0;
   const tinyxml2::XMLElement* element = nullptr;
 };
@@ -475,6 +477,8 @@ ParticleRecord Reader::read_particle(const tinyxml2::XMLElement* e) const {
   p.lock = a.index("lock", 0);
   if (p.lock > (kLockTranslation | kLockRotation)) a.bad("lock", "has bits beyond 63 (x y z rx ry rz)");
   p.passive = a.flag("passive", false);
+  p.role = a.index("role", 0);
+  if (p.role > unsigned(Role::Volatile)) a.bad("role", "must be 0 (none), 1 (parent), 2 (child) or 3 (volatile)");
   p.point_mass = a.real("point_mass", 0.0);
   if (!(p.point_mass >= 0)) a.bad("point_mass", "must be >= 0");
   a.done();
@@ -703,6 +707,7 @@ void build(const Reader& reader, const Document& d, Model& m) {
       m.set_load(p, r.load);
       m.set_lock(p, std::uint8_t(r.lock));
       m.set_passive(p, r.passive);
+      m.set_role(p, Role(r.role));
       m.set_point_mass(p, r.point_mass);
       id_of[r.id] = p;
     } catch (const ModelError& e) {

@@ -143,6 +143,11 @@ void replay_trace(std::istream& in, const std::string& name, Model& m, Solver& s
       else if (op == "lock") {
         ParticleId p = r.id();
         m.set_lock(p, std::uint8_t(r.number()));
+      } else if (op == "role") {
+        ParticleId p = r.id();
+        const double role = r.number();
+        if (role < 0 || role > double(Role::Volatile)) throw ModelError(r.where + ": unknown role");
+        m.set_role(p, Role(int(role)));
       } else if (op == "passive") {
         ParticleId p = r.id();
         m.set_passive(p, r.number() != 0);

@@ -8,7 +8,7 @@
 //   cable A B EA EI T0 MASS REST beam_from P DX DY DZ N EA EI T0 MASS
 //   quad_grid ROWS COLS EA EI T0 MASS P...   patch EA EI T0 MASS A B C D ...
 //   delete_particle P  merge P...  explode P  explode_from P B  delete B
-//   insert A B  remove_from_beam P  lock P BITS  passive P 0|1  load P X Y Z
+//   insert A B  remove_from_beam P  lock P BITS  passive P 0|1  role P R  load P X Y Z
 //   mass P KG  position P X Y Z  gravity X Y Z  settings KEY=VALUE ...
 //   steps N   open PATH (a model database)   # comment
 #include <iosfwd>

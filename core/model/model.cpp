@@ -307,8 +307,19 @@ std::vector<BlockId> Model::blocks_of(ParticleId p) const {
   return out;
 }
 
+void Model::set_role(ParticleId p, Role r) {
+  require_particle(p, "role");
+  particles.role[p] = std::uint8_t(r);
+}
+
 State Model::state(ParticleId p) const {
   require_particle(p, "state");
+  switch (Role(particles.role[p])) {
+    case Role::Parent: return State::Parent;
+    case Role::Child: return State::Child;
+    case Role::Volatile: return State::Volatile;
+    case Role::None: break;
+  }
   if (particles.degree[p] == 0) return State::Isolated;
   if (particles.passive[p]) return State::Passive;
   if (particles.lock[p] & kLockRotation) return State::FullLock;

@@ -77,6 +77,7 @@ class Model {
   void set_passive(ParticleId p, bool passive);
   void set_load(ParticleId p, const Vec3& f);
   void set_point_mass(ParticleId p, double kg);
+  void set_role(ParticleId p, Role r);
   Vec3 gravity = Vec3::Zero();
 
   // --- queries -----------------------------------------------------------

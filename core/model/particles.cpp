@@ -6,7 +6,7 @@ void Particles::attach(UndoLog* undo) {
   log = undo;
   for (auto* v : {&position, &velocity, &force, &load}) v->attach(undo);
   for (auto* v : {&stiffness, &point_mass, &lumped_mass}) v->attach(undo);
-  for (auto* v : {&lock, &alive, &passive, &active}) v->attach(undo);
+  for (auto* v : {&lock, &alive, &passive, &active, &role}) v->attach(undo);
   for (auto* v : {&generation, &first_dart, &degree, &free_slots}) v->attach(undo);
 }
 
@@ -25,6 +25,7 @@ ParticleId Particles::allocate(Vec3 x) {
     alive.push_back(0);
     passive.push_back(0);
     active.push_back(0);
+    role.push_back(0);
     generation.push_back(0);
     first_dart.push_back(kNone);
     degree.push_back(0);
@@ -40,6 +41,7 @@ ParticleId Particles::allocate(Vec3 x) {
   alive[p] = 1;
   passive[p] = 0;
   active[p] = 0;
+  role[p] = 0;
   first_dart[p] = kNone;
   degree[p] = 0;
   if (log) log->scalar(live);

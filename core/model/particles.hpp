@@ -17,6 +17,7 @@ struct Particles {
   LoggedVector<double> lumped_mass; // physical mass lumped from its elements
   LoggedVector<std::uint8_t> lock;  // LockBits
   LoggedVector<std::uint8_t> alive, passive;
+  LoggedVector<std::uint8_t> role;    // Role, for the extended states
   LoggedVector<std::uint8_t> active;  // integrated this step: alive, has blocks, not passive
   LoggedVector<std::uint32_t> generation;
   LoggedVector<std::uint32_t> first_dart;  // head of the ring of darts embedding it

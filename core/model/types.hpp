@@ -13,9 +13,15 @@ using BlockId = std::uint32_t;
 using ElementIndex = std::uint32_t;
 inline constexpr std::uint32_t kNone = 0xffffffffu;
 
-// Vertex states of thesis 4.2.6, derived from blocks and constraints.
-enum class State { Isolated, Passive, Lock, FullLock, Simple, Shared };
+// Vertex states of thesis 4.2.6, derived from blocks and constraints, and
+// the extended states of 5.5.1 and 6.5.2 (parent, child, volatile): roles an
+// agent's or a joint's rule gives a particle, which then take precedence.
+enum class State { Isolated, Passive, Lock, FullLock, Simple, Shared, Parent, Child, Volatile };
 const char* state_name(State s);
+
+enum class Role : std::uint8_t { None, Parent, Child, Volatile };
+const char* role_name(Role r);
+bool parse_role(const std::string& name, Role& out);
 
 enum class BlockKind { Cable, Beam, Patch };
 const char* block_kind_name(BlockKind k);

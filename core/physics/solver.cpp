@@ -1,6 +1,9 @@
 #include "physics/solver.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "physics/free_axes.hpp"
 
 namespace tendril {
 
@@ -13,145 +16,176 @@ const char* damping_name(Damping d) {
   return "?";
 }
 
-namespace {
-inline Vec3 free_mask(std::uint8_t lock) {
-  return Vec3((lock & kLockX) ? 0.0 : 1.0, (lock & kLockY) ? 0.0 : 1.0, (lock & kLockZ) ? 0.0 : 1.0);
+const char* integrator_name(Integrator i) {
+  switch (i) {
+    case Integrator::Leapfrog: return "leapfrog";
+    case Integrator::SymplecticEuler: return "symplectic_euler";
+    case Integrator::VelocityVerlet: return "velocity_verlet";
+    case Integrator::Midpoint: return "midpoint";
+    case Integrator::RK4: return "rk4";
+  }
+  return "?";
 }
-}  // namespace
+
+std::optional<Integrator> parse_integrator(std::string_view name) {
+  for (Integrator i : kIntegrators)
+    if (name == integrator_name(i)) return i;
+  return std::nullopt;
+}
+
+int force_evaluations_per_step(Integrator i) {
+  switch (i) {
+    case Integrator::Leapfrog:
+    case Integrator::SymplecticEuler: return 1;
+    case Integrator::VelocityVerlet:
+    case Integrator::Midpoint: return 2;
+    case Integrator::RK4: return 4;
+  }
+  return 0;
+}
+
+double fictitious_mass_scale(Integrator i) {
+  switch (i) {
+    case Integrator::Leapfrog:
+    case Integrator::VelocityVerlet:
+    case Integrator::RK4: return 1;
+    case Integrator::SymplecticEuler: return 2;
+    case Integrator::Midpoint: return 48;
+  }
+  return 1;
+}
+
+const char* mass_mode_name(MassMode m) {
+  switch (m) {
+    case MassMode::Fictitious: return "fictitious";
+    case MassMode::Physical: return "physical";
+  }
+  return "?";
+}
+
+std::optional<MassMode> parse_mass_mode(std::string_view name) {
+  for (MassMode m : {MassMode::Fictitious, MassMode::Physical})
+    if (name == mass_mode_name(m)) return m;
+  return std::nullopt;
+}
 
 void Solver::compute_forces() {
   Particles& P = model_.particles;
-  const std::size_t n = P.capacity();
-  Vec3* x = P.position.data();
-  Vec3* F = P.force.data();
-  double* S = P.stiffness.data();
-  const Vec3 g = model_.gravity;
-  for (std::size_t p = 0; p < n; ++p) {
-    F[p] = P.load[p] + (P.point_mass[p] + P.lumped_mass[p]) * g;
-    S[p] = 0;
-  }
-  const double gf = settings.geometric_factor;
-  for (const Bar& b : model_.bars.items) {
-    const Vec3 d = x[b.j] - x[b.i];
-    const double L = d.norm();
-    const double k = b.EA / b.rest_length;
-    double T = b.prestress + k * (L - b.rest_length);  // eq. 3.32
-    if (b.tension_only && T < 0) T = 0;
-    if (L > 0) {
-      const Vec3 f = (T / L) * d;  // eq. 3.33
-      F[b.i] += f;
-      F[b.j] -= f;
-    }
-    const double s = k + (L > 0 && T > 0 ? gf * T / L : 0.0);  // eq. 3.35
-    S[b.i] += s;
-    S[b.j] += s;
-  }
-  for (const Hinge& h : model_.hinges.items) {
-    const Vec3 a = x[h.j] - x[h.i], b = x[h.k] - x[h.j];
-    const double La = a.norm(), Lb = b.norm(), Lc = (x[h.k] - x[h.i]).norm();
-    const double ka = 4 * h.EI / (La * La * La), kb = 4 * h.EI / (Lb * Lb * Lb);  // eq. 3.43
-    S[h.j] += ka + kb;
-    const Vec3 nrm = a.cross(b);
-    const double nn = nrm.norm();
-    if (nn <= 0 || Lc <= 0) continue;  // straight (or degenerate): no bending force
-    const double sin_alpha = nn / (La * Lb);
-    // Moment EI*(kappa - kappa0) with kappa = 2 sin(alpha) / Lc (eq. 3.41).
-    const double M = h.EI * (2 * sin_alpha / Lc - h.rest_curvature);
-    // Shears M/La and M/Lb act normal to the links in the plane ijk
-    // (eq. 3.42), pushing the ends away from the centre of curvature.
-    const Vec3 fi = (M / La) * a.cross(nrm).normalized();
-    const Vec3 fk = (M / Lb) * b.cross(nrm).normalized();
-    F[h.i] += fi;
-    F[h.k] += fk;
-    F[h.j] -= fi + fk;
-  }
-}
-
-void Solver::check_finite() const {
-  const Particles& P = model_.particles;
-  for (ParticleId p = 0; p < P.capacity(); ++p) {
-    if (!P.active[p]) continue;
-    if (!P.force[p].allFinite() || !std::isfinite(P.stiffness[p]))
-      throw NumericalError("solver: the force on particle " + std::to_string(p) +
-                           " is not finite at step " + std::to_string(steps_) +
-                           "; no particle was moved");
-  }
+  accumulate_forces(P.position.data(), P.force.data(), P.stiffness.data());
+  ++evaluations_;
 }
 
 void Solver::step() {
+  size_scratch();
   compute_forces();
-  integrate_leapfrog();
+  prepare_masses();
+  switch (settings.integrator) {
+    case Integrator::Leapfrog: integrate_leapfrog(); break;
+    case Integrator::SymplecticEuler: integrate_symplectic_euler(); break;
+    case Integrator::VelocityVerlet: integrate_velocity_verlet(); break;
+    case Integrator::Midpoint: integrate_midpoint(); break;
+    case Integrator::RK4: integrate_rk4(); break;
+  }
   ++steps_;
   time_ += settings.dt;
 }
 
-void Solver::integrate_leapfrog() {
-  Particles& P = model_.particles;
-  const std::size_t n = P.capacity();
-  const double dt = settings.dt;
-  const double mass_scale = settings.mass_factor * 0.5 * dt * dt;  // eq. 3.4
-  double A = 1, B = 1;
-  if (settings.damping == Damping::Viscous) {  // eq. 3.26
-    A = (1 - settings.viscous / 2) / (1 + settings.viscous / 2);
-    B = (1 + A) / 2;
+void Solver::size_scratch() {
+  const std::size_t n = model_.particles.capacity();
+  if (mass_.size() != n) mass_.resize(n);
+  const Integrator i = settings.integrator;
+  if (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) return;
+  if (xs_.size() != n) {
+    xs_.resize(n);
+    Fs_.resize(n);
+    vs_.resize(n);
+    Ss_.resize(n);
   }
-  const double first = restart_ ? 0.5 : 1.0;  // Leapfrog is not self-starting
-  double residual2 = 0, momentum2 = 0, ke = 0;
-  bool finite = true;
-  Vec3* v = P.velocity.data();
-  const Vec3* F = P.force.data();
+  if (i == Integrator::RK4 && sum_x_.size() != n) {
+    sum_x_.resize(n);
+    sum_v_.resize(n);
+  }
+}
+
+void Solver::prepare_masses() {
+  const Particles& P = model_.particles;
+  const std::size_t n = P.capacity();
+  const bool physical = settings.mass_mode == MassMode::Physical;
+  const double mass_scale =
+      settings.mass_factor * fictitious_mass_scale(settings.integrator) * 0.5 * settings.dt * settings.dt;  // eq. 3.4
+  double residual2 = 0;
   for (std::size_t p = 0; p < n; ++p) {
     if (!P.active[p]) continue;
-    const Vec3 Ff = F[p].cwiseProduct(free_mask(P.lock[p]));
-    const double M = mass_scale * P.stiffness[p];
-    finite &= Ff.allFinite() && M > 0;
-    residual2 = std::max(residual2, Ff.squaredNorm());
-    v[p] = (restart_ ? 0.0 : A) * v[p] + (first * B * dt / M) * Ff;  // eq. 3.11 / 3.26
-    ke += M * v[p].squaredNorm();                                    // eq. 3.28
-    momentum2 = std::max(momentum2, M * M * v[p].squaredNorm());
-  }
-  if (!finite) {
-    // Undo nothing: positions are untouched. Name the first culprit.
-    for (std::size_t p = 0; p < n; ++p) v[p].setZero();
-    check_finite();
-    throw NumericalError("solver: a particle has no stiffness (an element with zero EA?) at step " +
-                         std::to_string(steps_));
+    if (!P.force[p].allFinite() || !std::isfinite(P.stiffness[p]))
+      throw NumericalError("solver: the force on particle " + std::to_string(p) + " is not finite at step " +
+                           std::to_string(steps_) + "; no particle was moved");
+    const Vec3 free = free_axes(P.lock[p]);
+    double M;
+    if (physical) {
+      M = P.point_mass[p] + P.lumped_mass[p];
+      if (!(M > 0)) {
+        if (free.isZero())
+          M = 1;  // fully locked: its mass only ever scales zero
+        else
+          throw ModelError("solver: particle " + std::to_string(p) +
+                           " has no physical mass; mass_mode \"physical\" needs a point mass or a line mass on "
+                           "every particle that can move");
+      }
+    } else {
+      M = mass_scale * P.stiffness[p];
+      if (!(M > 0))
+        throw NumericalError("solver: particle " + std::to_string(p) +
+                             " has no stiffness (an element with zero EA?) at step " + std::to_string(steps_));
+    }
+    mass_[p] = M;
+    residual2 = std::max(residual2, P.force[p].cwiseProduct(free).squaredNorm());
   }
   residual_ = std::sqrt(residual2);
-  // The force that would stop the fastest particle within one step: a
-  // particle crossing its equilibrium at speed has no residual but is not
-  // at rest, so convergence asks for both to be small.
-  motion_ = std::sqrt(momentum2) / dt;
-  restart_ = false;
-  Vec3* x = P.position.data();
-  if (settings.damping == Damping::Kinetic && ke_samples_ >= 1 && ke < ke_prev_) {
-    // Peak passed: move back to the interpolated peak (eq. 3.29-3.31), stop.
-    double q = 0;
-    if (ke_samples_ >= 2) {
-      const double G = ke_prev2_ - ke_prev_, H = ke_prev_ - ke;
-      if (H - G != 0) q = H / (H - G);
-    }
-    for (std::size_t p = 0; p < n; ++p) {
-      if (!P.active[p]) continue;
-      const double M = mass_scale * P.stiffness[p];
-      const Vec3 Ff = F[p].cwiseProduct(free_mask(P.lock[p]));
-      x[p] += dt * v[p] - dt * (1 + q) * v[p] + 0.5 * dt * dt * q * Ff / M;
-      v[p].setZero();
-    }
-    ++resets_;
-    ke_samples_ = 0;
-    ke_prev_ = ke_prev2_ = 0;
-    restart_ = true;
-    kinetic_energy_ = 0;
-    motion_ = 0;
-    return;
+}
+
+void Solver::stage_forces() {
+  accumulate_forces(xs_.data(), Fs_.data(), Ss_.data());
+  ++evaluations_;
+  const Particles& P = model_.particles;
+  for (std::size_t p = 0; p < P.capacity(); ++p) {
+    if (!P.active[p]) continue;
+    if (!Fs_[p].allFinite() || !xs_[p].allFinite())
+      throw NumericalError("solver: the force on particle " + std::to_string(p) + " is not finite at a " +
+                           integrator_name(settings.integrator) + " stage of step " + std::to_string(steps_) +
+                           "; no particle was moved");
   }
-  for (std::size_t p = 0; p < n; ++p)
-    if (P.active[p]) x[p] += dt * v[p];  // eq. 3.12
+}
+
+double Solver::viscous_rate() const { return settings.damping == Damping::Viscous ? settings.viscous : 0.0; }
+
+bool Solver::kinetic_peak_passed(double ke) const {
+  if (settings.damping != Damping::Kinetic || ke_samples_ < 1) return false;
+  // Leapfrog and Symplectic Euler interpolate the peak (eq. 3.29-3.31). The
+  // others stop where they are, so a plateau counts as the peak: a step that
+  // lands exactly on equilibrium keeps its speed for one more step.
+  const bool interpolated = settings.integrator == Integrator::Leapfrog ||
+                            settings.integrator == Integrator::SymplecticEuler;
+  return interpolated ? ke < ke_prev_ : ke <= ke_prev_;
+}
+
+void Solver::record_energy(double ke, double momentum2) {
   ke_prev2_ = ke_prev_;
   ke_prev_ = ke;
   ++ke_samples_;
   kinetic_energy_ = ke;
+  // The force that would stop the fastest particle within one step: a
+  // particle crossing its equilibrium at speed has no residual but is not
+  // at rest, so convergence asks for both to be small.
+  motion_ = std::sqrt(momentum2) / settings.dt;
+}
+
+void Solver::record_reset() {
+  ++resets_;
+  ke_samples_ = 0;
+  ke_prev_ = ke_prev2_ = 0;
+  kinetic_energy_ = 0;
+  motion_ = 0;
+  half_step_ = false;
 }
 
 RunResult Solver::run(double tolerance, std::uint64_t max_steps,
@@ -172,7 +206,7 @@ RunResult Solver::run(double tolerance, std::uint64_t max_steps,
 
 Vec3 Solver::reaction(ParticleId p) const {
   model_.require_particle(p, "reaction");
-  const Vec3 locked = Vec3::Ones() - free_mask(model_.particles.lock[p]);
+  const Vec3 locked = Vec3::Ones() - free_axes(model_.particles.lock[p]);
   return -model_.particles.force[p].cwiseProduct(locked);
 }
 
@@ -181,7 +215,7 @@ void Solver::reset_motion() {
   for (auto& v : P.velocity.raw()) v.setZero();
   ke_samples_ = 0;
   ke_prev_ = ke_prev2_ = kinetic_energy_ = 0;
-  restart_ = true;
+  half_step_ = false;
 }
 
 }  // namespace tendril

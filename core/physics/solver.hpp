@@ -1,12 +1,17 @@
 #pragma once
 // Dynamic relaxation on the model's flat buffers (thesis 3.2): forces from
-// elements and loads, lumped fictitious masses from the greatest direct
-// stiffness (eq. 3.4), Leapfrog (eq. 3.11-3.12) with viscous (eq. 3.26) or
-// kinetic damping with Barnes' parabolic correction (eq. 3.28-3.31).
-// The step allocates nothing and reads the topology only through the buffers.
+// elements and loads, lumped masses (fictitious, eq. 3.4, or physical), an
+// explicit time integrator for translation (eq. 3.9-3.15) and viscous
+// (eq. 3.26) or kinetic damping (eq. 3.28-3.31).
+// The step allocates nothing once the scratch buffers match the particle
+// capacity, and reads the topology only through the buffers.
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "model/model.hpp"
 
@@ -15,12 +20,53 @@ namespace tendril {
 enum class Damping { None, Viscous, Kinetic };
 const char* damping_name(Damping d);
 
+// Force evaluations per step: Leapfrog 1 (eq. 3.11-3.12), SymplecticEuler 1
+// (v += dt a, then x += dt v, no half-step start), VelocityVerlet 2 (the
+// start-of-step forces are recomputed because rules and scripts may change
+// the model between steps), Midpoint 2, RK4 4 (eq. 3.13-3.15).
+// Leapfrog's and Symplectic Euler's velocities lag the positions by half a
+// step; the others' are at the step's end. Switching converts them.
+enum class Integrator { Leapfrog, SymplecticEuler, VelocityVerlet, Midpoint, RK4 };
+inline constexpr std::array<Integrator, 5> kIntegrators = {Integrator::Leapfrog, Integrator::SymplecticEuler,
+                                                          Integrator::VelocityVerlet, Integrator::Midpoint,
+                                                          Integrator::RK4};
+// "leapfrog", "symplectic_euler", "velocity_verlet", "midpoint", "rk4".
+const char* integrator_name(Integrator i);
+std::optional<Integrator> parse_integrator(std::string_view name);
+int force_evaluations_per_step(Integrator i);
+// Eq. 3.4 bounds the stiffest mode at omega dt <= 2, Leapfrog's limit, also
+// Velocity Verlet's; RK4 is stable (and damps) up to 2 sqrt(2): all 1.
+// Symplectic Euler 2: its first kick from rest is a whole step, so twice the
+// mass makes its first move Leapfrog's, F / S (with 1, repeated kinetic
+// resets diverge). Midpoint 48: it amplifies every undamped oscillation
+// (|R|^2 = 1 + (omega dt)^4 / 4); only small steps between kinetic resets
+// keep it bounded.
+double fictitious_mass_scale(Integrator i);
+
+// Fictitious: M = mass_factor * fictitious_mass_scale(integrator) * dt^2/2 * S
+// (eq. 3.4), tuned for stability, so dt only scales time. Physical: M = point
+// mass + lumped element mass, for true dynamics; every integrated particle
+// with a free axis needs one (mass_factor does not apply).
+enum class MassMode { Fictitious, Physical };
+const char* mass_mode_name(MassMode m);  // "fictitious", "physical"
+std::optional<MassMode> parse_mass_mode(std::string_view name);
+
 struct SolverSettings {
-  double dt = 1.0;                // time step; masses scale with dt^2 (eq. 3.4)
+  double dt = 1.0;                // time step; fictitious masses scale with dt^2 (eq. 3.4)
   Damping damping = Damping::Kinetic;
-  double viscous = 0.1;           // C of eq. 3.26
+  // C of eq. 3.26. Viscous damping is the force -c M v with c = C / dt:
+  // Leapfrog and Symplectic Euler use eq. 3.26 (its trapezoidal form),
+  // Velocity Verlet the trapezoidal rule too, Midpoint and RK4 add it to the
+  // acceleration of every stage.
+  double viscous = 0.1;
   double geometric_factor = 1.0;  // g of eq. 3.35
-  double mass_factor = 1.0;       // extra safety on eq. 3.4 (>= 1)
+  double mass_factor = 1.0;       // extra safety on eq. 3.4 (>= 1); fictitious masses only
+  // Switchable between steps. Kinetic damping works with all: Leapfrog and
+  // Symplectic Euler (the same kick-drift recurrence) move back to Barnes'
+  // interpolated peak (eq. 3.29-3.31); the others stay at the step's start
+  // (the discrete peak). Velocities are zeroed.
+  Integrator integrator = Integrator::Leapfrog;
+  MassMode mass_mode = MassMode::Fictitious;
 };
 
 struct RunResult {
@@ -29,8 +75,8 @@ struct RunResult {
   bool converged = false;
 };
 
-// Thrown when a force or position stops being finite. The step that found it
-// did not move any particle.
+// Thrown when a force or position stops being finite, at the step's start or
+// at any stage of it. The step that found it moved no particle.
 struct NumericalError : ModelError {
   using ModelError::ModelError;
 };
@@ -48,6 +94,7 @@ class Solver {
                 const std::function<void(const RunResult&)>& progress = {}, std::uint64_t progress_every = 1000);
 
   void compute_forces();  // residual forces and direct stiffnesses at the current positions
+  // Largest unconstrained force at the start of the last step.
   double residual() const { return residual_; }
   double kinetic_energy() const { return kinetic_energy_; }
   // Largest M |v| / dt: the force that would stop the fastest particle in one step.
@@ -55,24 +102,49 @@ class Solver {
   std::uint64_t steps() const { return steps_; }
   double time() const { return time_; }
   std::uint64_t kinetic_resets() const { return resets_; }
+  std::uint64_t force_evaluations() const { return evaluations_; }
   // The force the supports exert on a locked particle (minus the residual
-  // force along its locked axes).
+  // force along its locked axes) at the start of the last step.
   Vec3 reaction(ParticleId p) const;
   // Forgets velocities and the kinetic-energy history (after a topology change
   // that invalidates them, or on request).
   void reset_motion();
 
  private:
+  void accumulate_forces(const Vec3* x, Vec3* F, double* S) const;  // forces.cpp
+  void size_scratch();
+  void prepare_masses();  // mass_ and residual_; throws before anything moves
+  void stage_forces();    // forces at xs_ into Fs_, Ss_; throws if not finite
+  double viscous_rate() const;  // c * dt = C when viscous, else 0
+  // integrators.cpp
   void integrate_leapfrog();
-  void check_finite() const;
+  void integrate_symplectic_euler();
+  void kick_drift(double first);  // both: `first` is the first kick's fraction of dt
+  void integrate_velocity_verlet();
+  void integrate_midpoint();
+  void integrate_rk4();
+  void synchronize_velocities();  // Leapfrog's v(t - dt/2) -> v(t)
+  // Ends a step of a synchronous integrator whose new state is (xn, vn).
+  void commit(const Vec3* xn, const Vec3* vn, double ke, double momentum2);
+  // Kinetic damping: the kinetic energy `ke` of the new velocities is below
+  // (or, for the synchronous methods, not above) the previous step's.
+  bool kinetic_peak_passed(double ke) const;
+  void record_energy(double ke, double momentum2);
+  void record_reset();
+
   Model& model_;
   double residual_ = 0, motion_ = 0;
   double kinetic_energy_ = 0;
   double ke_prev_ = 0, ke_prev2_ = 0;  // E and D of eq. 3.29
   int ke_samples_ = 0;
-  bool restart_ = true;  // the next velocity update is a half step
-  std::uint64_t steps_ = 0, resets_ = 0;
+  bool half_step_ = false;  // velocities are Leapfrog's, half a step behind the positions
+  std::uint64_t steps_ = 0, resets_ = 0, evaluations_ = 0;
   double time_ = 0;
+  // Scratch, sized to the particle capacity (on growth only, never per step).
+  std::vector<double> mass_;       // M of this step, per particle
+  std::vector<Vec3> xs_, Fs_, vs_;  // stage positions, forces, velocities
+  std::vector<double> Ss_;         // stage stiffnesses (unused but written)
+  std::vector<Vec3> sum_x_, sum_v_;  // RK4's weighted sums of L and K (eq. 3.13-3.14)
 };
 
 }  // namespace tendril

@@ -20,37 +20,53 @@ struct ElasticaResult {
   double deflection, load, exact_deflection, exact_load;
 };
 
-ElasticaResult buckle(double theta0_deg, Damping damping = Damping::Kinetic, double viscous = 0) {
-  const double L = 10, EI = 1e5, EA = 1e8;
-  const int n = 64;
-  const double k = std::sin(theta0_deg * std::numbers::pi / 360);
-  const double K = std::comp_ellint_1(k), E = std::comp_ellint_2(k);
-  const double chord = L * (2 * E / K - 1);
+// The strut, started from a half sine wave with the right chord and roughly
+// the right arc length; the rest lengths stay those of the straight strut.
+struct Strut {
   Model m;
   std::vector<ParticleId> ps;
-  for (int i = 0; i <= n; ++i) ps.push_back(m.add_particle(Vec3(L * i / n, 0, 0)));
-  m.add_beam(ps, Section{EA, EI, 0, 0});
-  // Start from a half sine wave with the right chord and roughly the right
-  // arc length; the rest lengths stay those of the straight strut.
-  const double amp = k * L / K;
-  for (int i = 0; i <= n; ++i) {
-    const double s = double(i) / n;
-    m.particles.position[ps[i]] = Vec3(chord * s, amp * std::sin(std::numbers::pi * s), 0);
+  double exact_deflection = 0, exact_load = 0;
+
+  explicit Strut(double theta0_deg) {
+    const double L = 10, EI = 1e5, EA = 1e8;
+    const int n = 64;
+    const double k = std::sin(theta0_deg * std::numbers::pi / 360);
+    const double K = std::comp_ellint_1(k), E = std::comp_ellint_2(k);
+    const double chord = L * (2 * E / K - 1);
+    for (int i = 0; i <= n; ++i) ps.push_back(m.add_particle(Vec3(L * i / n, 0, 0)));
+    m.add_beam(ps, Section{EA, EI, 0, 0});
+    const double amp = k * L / K;
+    for (int i = 0; i <= n; ++i) {
+      const double s = double(i) / n;
+      m.particles.position[ps[i]] = Vec3(chord * s, amp * std::sin(std::numbers::pi * s), 0);
+    }
+    for (ParticleId p : ps) m.set_lock(p, kLockZ);
+    m.set_lock(ps.front(), kLockX | kLockY | kLockZ);
+    m.set_lock(ps.back(), kLockX | kLockY | kLockZ);
+    exact_deflection = k * L / K;
+    exact_load = EI * std::pow(2 * K / L, 2);
   }
-  for (ParticleId p : ps) m.set_lock(p, kLockZ);
-  m.set_lock(ps.front(), kLockX | kLockY | kLockZ);
-  m.set_lock(ps.back(), kLockX | kLockY | kLockZ);
-  Solver solver(m);
+
+  ElasticaResult measure(const Solver& solver) const {
+    return {m.particles.position[ps[ps.size() / 2]].y(), -solver.reaction(ps.back()).x(), exact_deflection,
+            exact_load};
+  }
+};
+
+bool within(const ElasticaResult& r, double tolerance) {
+  return std::abs(r.deflection / r.exact_deflection - 1) < tolerance &&
+         std::abs(r.load / r.exact_load - 1) < tolerance;
+}
+
+ElasticaResult buckle(double theta0_deg, Damping damping = Damping::Kinetic, double viscous = 0) {
+  Strut strut(theta0_deg);
+  Solver solver(strut.m);
   solver.settings.damping = damping;
   solver.settings.viscous = viscous;
   RunResult r = solver.run(1e-3, 2'000'000);
   REQUIRE(r.converged);
-  REQUIRE(m.check() == "");
-  ElasticaResult out;
-  out.deflection = m.particles.position[ps[n / 2]].y();
-  out.load = -solver.reaction(ps.back()).x();
-  out.exact_deflection = k * L / K;
-  out.exact_load = EI * std::pow(2 * K / L, 2);
+  REQUIRE(strut.m.check() == "");
+  ElasticaResult out = strut.measure(solver);
   MESSAGE("theta0=" << theta0_deg << " steps=" << r.steps << " delta=" << out.deflection << " exact="
                     << out.exact_deflection << " P=" << out.load << " exact=" << out.exact_load);
   return out;
@@ -71,4 +87,53 @@ TEST_CASE("elastica with viscous damping reaches the same equilibrium") {
   ElasticaResult r = buckle(80.0, Damping::Viscous, 0.02);
   CHECK(std::abs(r.deflection / r.exact_deflection - 1) < 0.01);
   CHECK(std::abs(r.load / r.exact_load - 1) < 0.01);
+}
+
+TEST_CASE("elastica: every integrator with kinetic damping within 1% of the exact elastica") {
+  for (Integrator integrator : kIntegrators) {
+    const std::string name = integrator_name(integrator);
+    CAPTURE(name);
+    Strut strut(80.0);
+    Solver solver(strut.m);
+    solver.settings.integrator = integrator;
+    RunResult r = solver.run(1e-3, 200'000);
+    REQUIRE(r.converged);
+    CHECK(strut.m.check() == "");
+    ElasticaResult out = strut.measure(solver);
+    MESSAGE(name << ": steps=" << r.steps << " force evaluations=" << solver.force_evaluations()
+                 << " kinetic resets=" << solver.kinetic_resets() << " delta=" << out.deflection
+                 << " P=" << out.load);
+    CHECK(within(out, 0.01));
+  }
+}
+
+TEST_CASE("elastica: switching from Leapfrog to RK4 mid-run reaches the same elastica") {
+  Strut strut(80.0);
+  Solver solver(strut.m);
+  for (int i = 0; i < 500; ++i) solver.step();
+  REQUIRE(solver.residual() > 1);  // still far from equilibrium
+  solver.settings.integrator = Integrator::RK4;
+  RunResult r = solver.run(1e-3, 200'000);
+  REQUIRE(r.converged);
+  CHECK(strut.m.check() == "");
+  ElasticaResult out = strut.measure(solver);
+  MESSAGE("leapfrog x500, then rk4: steps=" << 500 + r.steps << " delta=" << out.deflection << " P=" << out.load);
+  CHECK(within(out, 0.01));
+}
+
+TEST_CASE("elastica: cycling through every integrator every 300 steps still converges") {
+  Strut strut(80.0);
+  Solver solver(strut.m);
+  RunResult r;
+  std::uint64_t steps = 0;
+  for (int round = 0; round < 100 && !r.converged; ++round) {
+    solver.settings.integrator = kIntegrators[round % kIntegrators.size()];
+    r = solver.run(1e-3, 300);
+    steps += r.steps;
+  }
+  REQUIRE(r.converged);
+  ElasticaResult out = strut.measure(solver);
+  MESSAGE("cycling: steps=" << steps << " last=" << std::string(integrator_name(solver.settings.integrator))
+                            << " delta=" << out.deflection << " P=" << out.load);
+  CHECK(within(out, 0.01));
 }

@@ -1,0 +1,229 @@
+// Explicit time integrators for translation (thesis 3.2.5). Each starts from
+// the forces and masses of the step's start (Solver::step) and ends with the
+// kinetic-energy bookkeeping of eq. 3.28. Locked axes have zero acceleration
+// and zero velocity. The multi-stage methods evaluate their stages on scratch
+// buffers and write the model only once every stage was finite, so a
+// NumericalError leaves positions and velocities as they were.
+#include <algorithm>
+#include <cmath>
+
+#include "physics/free_axes.hpp"
+#include "physics/solver.hpp"
+
+namespace tendril {
+
+// Leapfrog (eq. 3.11-3.12, with eq. 3.26) and Symplectic Euler are the same
+// kick-drift recurrence: the new velocity moves the particle, so it lags the
+// positions by half a step, and eq. 3.29-3.31 hold for both. They differ in
+// the first kick from velocities at the step's time (at rest, or left by a
+// synchronous integrator): Leapfrog is not self-starting and kicks half a
+// step, Symplectic Euler kicks a whole one.
+void Solver::integrate_leapfrog() { kick_drift(half_step_ ? 1.0 : 0.5); }
+void Solver::integrate_symplectic_euler() { kick_drift(1.0); }
+
+void Solver::kick_drift(double first) {
+  Particles& P = model_.particles;
+  const std::uint8_t* active = P.active.data();
+  const std::uint8_t* lock = P.lock.data();
+  const std::size_t n = P.capacity();
+  const double dt = settings.dt;
+  double A = 1, B = 1;
+  if (settings.damping == Damping::Viscous) {  // eq. 3.26
+    A = (1 - settings.viscous / 2) / (1 + settings.viscous / 2);
+    B = (1 + A) / 2;
+  }
+  const double keep = first == 1.0 ? A : 1.0;
+  double momentum2 = 0, ke = 0;
+  Vec3* v = P.velocity.data();
+  const Vec3* F = P.force.data();
+  const double* mass = mass_.data();
+  for (std::size_t p = 0; p < n; ++p) {
+    if (!active[p]) continue;
+    const double M = mass[p];
+    v[p] = (keep * v[p] + (first * B * dt / M) * F[p]).cwiseProduct(free_axes(lock[p]));  // eq. 3.11 / 3.26
+    ke += M * v[p].squaredNorm();                                                        // eq. 3.28
+    momentum2 = std::max(momentum2, M * M * v[p].squaredNorm());
+  }
+  Vec3* x = P.position.data();
+  if (kinetic_peak_passed(ke)) {
+    // Peak passed: move back to the interpolated peak (eq. 3.29-3.31), stop.
+    double q = 0;
+    if (ke_samples_ >= 2) {
+      const double G = ke_prev2_ - ke_prev_, H = ke_prev_ - ke;
+      if (H - G != 0) q = H / (H - G);
+    }
+    for (std::size_t p = 0; p < n; ++p) {
+      if (!active[p]) continue;
+      const Vec3 Ff = F[p].cwiseProduct(free_axes(lock[p]));
+      x[p] += dt * v[p] - dt * (1 + q) * v[p] + 0.5 * dt * dt * q * Ff / mass[p];
+      v[p].setZero();
+    }
+    record_reset();
+    return;
+  }
+  for (std::size_t p = 0; p < n; ++p)
+    if (active[p]) x[p] += dt * v[p];  // eq. 3.12
+  record_energy(ke, momentum2);
+  half_step_ = true;
+}
+
+void Solver::synchronize_velocities() {
+  if (!half_step_) return;
+  // Leapfrog left v(t - dt/2); the synchronous methods start from v(t).
+  Particles& P = model_.particles;
+  const std::uint8_t* active = P.active.data();
+  const std::uint8_t* lock = P.lock.data();
+  Vec3* vel = P.velocity.data();
+  const Vec3* force = P.force.data();
+  const double h = 0.5 * settings.dt;
+  for (std::size_t p = 0; p < P.capacity(); ++p)
+    if (active[p]) vel[p] = (vel[p] + (h / mass_[p]) * force[p]).cwiseProduct(free_axes(lock[p]));
+  half_step_ = false;
+}
+
+void Solver::integrate_velocity_verlet() {
+  // x' = x + dt v + dt^2/2 a;  v' = v + dt/2 (a + a'), with the damping force
+  // -c M v taken by the same trapezoidal rule (C = c dt):
+  //   v_half = (1 - C/2) v + dt/2 a,  x' = x + dt v_half,
+  //   v' = (v_half + dt/2 a') / (1 + C/2).
+  synchronize_velocities();
+  Particles& P = model_.particles;
+  const std::uint8_t* active = P.active.data();
+  const std::uint8_t* lock = P.lock.data();
+  const std::size_t n = P.capacity();
+  const double dt = settings.dt, h = 0.5 * dt, C = viscous_rate();
+  const Vec3 *x = P.position.data(), *v = P.velocity.data(), *F = P.force.data();
+  const double* mass = mass_.data();
+  for (std::size_t p = 0; p < n; ++p) {
+    if (!active[p]) {
+      xs_[p] = x[p];
+      continue;
+    }
+    const Vec3 free = free_axes(lock[p]);
+    vs_[p] = ((1 - C / 2) * v[p] + (h / mass[p]) * F[p]).cwiseProduct(free);
+    xs_[p] = x[p] + dt * vs_[p];
+  }
+  stage_forces();
+  double ke = 0, momentum2 = 0;
+  for (std::size_t p = 0; p < n; ++p) {
+    if (!active[p]) continue;
+    const double M = mass[p];
+    vs_[p] = (vs_[p] + (h / M) * Fs_[p].cwiseProduct(free_axes(lock[p]))) / (1 + C / 2);
+    ke += M * vs_[p].squaredNorm();
+    momentum2 = std::max(momentum2, M * M * vs_[p].squaredNorm());
+  }
+  commit(xs_.data(), vs_.data(), ke, momentum2);
+}
+
+void Solver::integrate_midpoint() {
+  // Explicit midpoint (RK2): the state at t + dt/2 from the slopes at t, then
+  // the whole step with the slopes at t + dt/2. Acceleration a = F/M - c v.
+  synchronize_velocities();
+  Particles& P = model_.particles;
+  const std::uint8_t* active = P.active.data();
+  const std::uint8_t* lock = P.lock.data();
+  const std::size_t n = P.capacity();
+  const double dt = settings.dt, h = 0.5 * dt, c = viscous_rate() / dt;
+  const Vec3 *x = P.position.data(), *v = P.velocity.data(), *F = P.force.data();
+  const double* mass = mass_.data();
+  for (std::size_t p = 0; p < n; ++p) {
+    if (!active[p]) {
+      xs_[p] = x[p];
+      continue;
+    }
+    const Vec3 free = free_axes(lock[p]);
+    const Vec3 v0 = v[p].cwiseProduct(free);
+    const Vec3 a0 = F[p].cwiseProduct(free) / mass[p] - c * v0;
+    xs_[p] = x[p] + h * v0;
+    vs_[p] = v0 + h * a0;
+  }
+  stage_forces();
+  double ke = 0, momentum2 = 0;
+  for (std::size_t p = 0; p < n; ++p) {
+    if (!active[p]) continue;
+    const Vec3 free = free_axes(lock[p]);
+    const double M = mass[p];
+    const Vec3 am = Fs_[p].cwiseProduct(free) / M - c * vs_[p];
+    xs_[p] = x[p] + dt * vs_[p];
+    vs_[p] = v[p].cwiseProduct(free) + dt * am;
+    ke += M * vs_[p].squaredNorm();
+    momentum2 = std::max(momentum2, M * M * vs_[p].squaredNorm());
+  }
+  commit(xs_.data(), vs_.data(), ke, momentum2);
+}
+
+void Solver::integrate_rk4() {
+  // Eq. 3.13-3.15: L_j are the velocity estimates, K_j the accelerations
+  // a = F/M - c v at (x + h_j L_{j-1}, L_j); sum_x_ and sum_v_ gather
+  // L1 + 2 L2 + 2 L3 + L4 and K1 + 2 K2 + 2 K3 + K4. vs_ holds the current L.
+  synchronize_velocities();
+  Particles& P = model_.particles;
+  const std::uint8_t* active = P.active.data();
+  const std::uint8_t* lock = P.lock.data();
+  const std::size_t n = P.capacity();
+  const double dt = settings.dt, c = viscous_rate() / dt;
+  const Vec3 *x = P.position.data(), *v = P.velocity.data(), *F = P.force.data();
+  const double* mass = mass_.data();
+  for (std::size_t p = 0; p < n; ++p) {  // j = 1
+    if (!active[p]) {
+      xs_[p] = x[p];
+      continue;
+    }
+    const Vec3 free = free_axes(lock[p]);
+    const Vec3 L1 = v[p].cwiseProduct(free);
+    const Vec3 K1 = F[p].cwiseProduct(free) / mass[p] - c * L1;
+    sum_x_[p] = L1;
+    sum_v_[p] = K1;
+    xs_[p] = x[p] + (0.5 * dt) * L1;
+    vs_[p] = L1 + (0.5 * dt) * K1;
+  }
+  // j = 2, 3: weight 2; the next stage sits at h = dt/2, then dt.
+  for (double h : {0.5 * dt, dt}) {
+    stage_forces();
+    for (std::size_t p = 0; p < n; ++p) {
+      if (!active[p]) continue;
+      const Vec3 free = free_axes(lock[p]);
+      const Vec3 L = vs_[p];
+      const Vec3 K = Fs_[p].cwiseProduct(free) / mass[p] - c * L;
+      sum_x_[p] += 2 * L;
+      sum_v_[p] += 2 * K;
+      xs_[p] = x[p] + h * L;
+      vs_[p] = v[p].cwiseProduct(free) + h * K;
+    }
+  }
+  stage_forces();  // j = 4
+  double ke = 0, momentum2 = 0;
+  for (std::size_t p = 0; p < n; ++p) {
+    if (!active[p]) continue;
+    const Vec3 free = free_axes(lock[p]);
+    const double M = mass[p];
+    const Vec3 L = vs_[p];
+    const Vec3 K = Fs_[p].cwiseProduct(free) / M - c * L;
+    xs_[p] = x[p] + (dt / 6) * (sum_x_[p] + L);                  // eq. 3.14
+    vs_[p] = v[p].cwiseProduct(free) + (dt / 6) * (sum_v_[p] + K);  // eq. 3.13
+    ke += M * vs_[p].squaredNorm();
+    momentum2 = std::max(momentum2, M * M * vs_[p].squaredNorm());
+  }
+  commit(xs_.data(), vs_.data(), ke, momentum2);
+}
+
+void Solver::commit(const Vec3* xn, const Vec3* vn, double ke, double momentum2) {
+  Particles& P = model_.particles;
+  const std::uint8_t* active = P.active.data();
+  const std::size_t n = P.capacity();
+  Vec3 *pos = P.position.data(), *vel = P.velocity.data();
+  if (kinetic_peak_passed(ke)) {  // stay at the step's start: the discrete peak
+    for (std::size_t p = 0; p < n; ++p)
+      if (active[p]) vel[p].setZero();
+    record_reset();
+    return;
+  }
+  for (std::size_t p = 0; p < n; ++p) {
+    if (!active[p]) continue;
+    pos[p] = xn[p];
+    vel[p] = vn[p];
+  }
+  record_energy(ke, momentum2);
+}
+
+}  // namespace tendril

@@ -1,0 +1,249 @@
+// The time integrators as true dynamics (physical masses, no damping) and
+// their contracts: order of accuracy, locks, reactions, non-finite stages,
+// mass modes, names, and no allocation in a step.
+#include <doctest/doctest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+#include <numbers>
+#include <sstream>
+
+#include "model/model.hpp"
+#include "physics/solver.hpp"
+
+using namespace tendril;
+
+// Counts heap allocations while `g_counting` is set (for the whole binary).
+namespace {
+std::atomic<bool> g_counting{false};
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  if (g_counting) ++g_allocations;
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace {
+
+// A point mass m on a linear spring: one bar of stiffness EA/L0 (a two-particle
+// beam, which has no hinge and resists compression) from a locked particle, along x (the motion stays on the bar's line, so the force is
+// exactly linear). x(t) = L0 + A cos(omega t), omega = sqrt(EA / (m L0)).
+struct Spring {
+  static constexpr double EA = 1e4, L0 = 1, mass = 2, A = 0.01;
+  Model m;
+  ParticleId anchor, bob;
+  Spring() {
+    anchor = m.add_particle(Vec3(0, 0, 0));
+    bob = m.add_particle(Vec3(L0, 0, 0));
+    m.add_beam({anchor, bob}, Section{EA, 1, 0, 0});  // one bar, no hinge; cables go slack
+    m.particles.position[bob] = Vec3(L0 + A, 0, 0);
+    m.set_lock(anchor, kLockTranslation);
+    m.set_point_mass(bob, mass);
+  }
+  static double omega() { return std::sqrt(EA / (mass * L0)); }
+  static double period() { return 2 * std::numbers::pi / omega(); }
+};
+
+struct Errors {
+  double max_position = 0;  // max over the steps of |x_n - x(t_n)| on [0, T]
+  double end_position = 0;  // |x_N - x(T)|
+};
+
+Errors oscillate(Integrator integrator, int steps_per_period) {
+  Spring s;
+  Solver solver(s.m);
+  solver.settings.integrator = integrator;
+  solver.settings.mass_mode = MassMode::Physical;
+  solver.settings.damping = Damping::None;
+  solver.settings.dt = Spring::period() / steps_per_period;
+  Errors e;
+  for (int n = 1; n <= steps_per_period; ++n) {
+    solver.step();
+    const double t = n * solver.settings.dt;
+    const double exact = Spring::L0 + Spring::A * std::cos(Spring::omega() * t);
+    const double err = std::abs(s.m.particles.position[s.bob].x() - exact);
+    e.max_position = std::max(e.max_position, err);
+    if (n == steps_per_period) e.end_position = err;
+  }
+  CHECK(s.m.particles.position[s.anchor] == Vec3(0, 0, 0));
+  CHECK(s.m.particles.position[s.bob].y() == 0);
+  return e;
+}
+
+int expected_order(Integrator i) {
+  switch (i) {
+    case Integrator::SymplecticEuler: return 1;
+    case Integrator::RK4: return 4;
+    default: return 2;
+  }
+}
+
+}  // namespace
+
+TEST_CASE("integrators: observed order of accuracy on a mass-spring oscillator") {
+  // dt = T/50, T/100, T/200 over one period T; order = log2 of the ratio of
+  // successive errors, within 0.3 of the method's order. The error measured
+  // is the largest position error over the period (the global error). At
+  // t = T exactly the leading error terms vanish (they go with sin(omega t)),
+  // so the end-of-period error, reported too, shows one or two orders more
+  // than the method has (Symplectic Euler's looks third order).
+  for (Integrator integrator : kIntegrators) {
+    const std::string name = integrator_name(integrator);
+    CAPTURE(name);
+    const Errors e50 = oscillate(integrator, 50), e100 = oscillate(integrator, 100), e200 = oscillate(integrator, 200);
+    const double p1 = std::log2(e50.max_position / e100.max_position);
+    const double p2 = std::log2(e100.max_position / e200.max_position);
+    const double q2 = std::log2(e100.end_position / e200.end_position);
+    std::ostringstream msg;
+    msg << integrator_name(integrator) << ": max position error " << e50.max_position << ", " << e100.max_position
+        << ", " << e200.max_position << " m at T/50, T/100, T/200 -> order " << p1 << ", " << p2
+        << " (end-of-period error order " << q2 << ")";
+    MESSAGE(msg.str());
+    CHECK(std::abs(p1 - expected_order(integrator)) < 0.3);
+    CHECK(std::abs(p2 - expected_order(integrator)) < 0.3);
+  }
+}
+
+TEST_CASE("integrators: names round-trip and unknown names are refused") {
+  for (Integrator i : kIntegrators) {
+    CHECK(parse_integrator(integrator_name(i)) == i);
+    CHECK(force_evaluations_per_step(i) >= 1);
+    CHECK(fictitious_mass_scale(i) >= 1);
+  }
+  CHECK(!parse_integrator("euler").has_value());
+  CHECK(!parse_integrator("RK4").has_value());
+  CHECK(parse_mass_mode("physical") == MassMode::Physical);
+  CHECK(parse_mass_mode(mass_mode_name(MassMode::Fictitious)) == MassMode::Fictitious);
+  CHECK(!parse_mass_mode("real").has_value());
+  const SolverSettings defaults;
+  CHECK(defaults.integrator == Integrator::Leapfrog);
+  CHECK(defaults.mass_mode == MassMode::Fictitious);
+}
+
+TEST_CASE("integrators: a loaded bar stretches by F L / EA, supports react, locked axes stay") {
+  for (Integrator integrator : kIntegrators) {
+    const std::string name = integrator_name(integrator);
+    CAPTURE(name);
+    Model m;
+    ParticleId a = m.add_particle(Vec3(0, 0, 0)), b = m.add_particle(Vec3(2, 0, 0));
+    m.add_cable(a, b, Section{1e6, 0, 0, 0});
+    m.set_lock(a, kLockTranslation);
+    m.set_lock(b, kLockY | kLockZ);
+    m.set_load(b, Vec3(500, 300, -200));  // the locked axes take the rest
+    Solver s(m);
+    s.settings.integrator = integrator;
+    RunResult r = s.run(1e-8, 100000);
+    REQUIRE(r.converged);
+    CHECK(s.force_evaluations() == r.steps * force_evaluations_per_step(integrator));
+    CHECK(m.particles.position[a] == Vec3(0, 0, 0));
+    CHECK(m.particles.position[b].y() == 0);
+    CHECK(m.particles.position[b].z() == 0);
+    CHECK(m.particles.position[b].x() == doctest::Approx(2 + 500 * 2 / 1e6).epsilon(1e-12));
+    CHECK(s.reaction(a).x() == doctest::Approx(-500).epsilon(1e-9));
+    CHECK(s.reaction(b).x() == 0);
+    CHECK(s.reaction(b).y() == doctest::Approx(-300).epsilon(1e-9));
+    CHECK(s.reaction(b).z() == doctest::Approx(200).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("integrators: a lock set on a moving particle stops it along the locked axis") {
+  for (Integrator integrator : kIntegrators) {
+    const std::string name = integrator_name(integrator);
+    CAPTURE(name);
+    Model m;
+    std::vector<ParticleId> ps;
+    for (int i = 0; i <= 4; ++i) ps.push_back(m.add_particle(Vec3(i, 0, 0)));
+    m.add_beam(ps, Section{1e7, 1e3, 0, 0});
+    m.set_lock(ps[0], kLockTranslation);
+    m.set_lock(ps[4], kLockTranslation);
+    m.set_load(ps[2], Vec3(0, 0, -100));
+    Solver s(m);
+    s.settings.integrator = integrator;
+    s.settings.damping = Damping::None;
+    for (int i = 0; i < 20; ++i) s.step();
+    REQUIRE(m.particles.velocity[ps[2]].z() != 0);
+    const double z = m.particles.position[ps[2]].z();
+    m.set_lock(ps[2], kLockZ);
+    for (int i = 0; i < 20; ++i) s.step();
+    CHECK(m.particles.position[ps[2]].z() == z);
+  }
+}
+
+TEST_CASE("integrators: a non-finite stage stops the step with nothing moved") {
+  // Finite at the step's start, but the first stage (at x + dt v or
+  // x + dt/2 v) is so far away that the bar's force overflows.
+  for (Integrator integrator : {Integrator::VelocityVerlet, Integrator::Midpoint, Integrator::RK4}) {
+    const std::string name = integrator_name(integrator);
+    CAPTURE(name);
+    Model m;
+    ParticleId a = m.add_particle(Vec3(0, 0, 0)), b = m.add_particle(Vec3(1, 0, 0)), c = m.add_particle(Vec3(2, 0, 0));
+    m.add_beam({a, b, c}, Section{1e6, 10, 0, 0});
+    m.set_lock(a, kLockTranslation);
+    Solver s(m);
+    s.settings.integrator = integrator;
+    s.step();
+    m.particles.velocity[c] = Vec3(0, 1e300, 0);
+    const auto positions = m.particles.position.raw();
+    const auto velocities = m.particles.velocity.raw();
+    const std::uint64_t steps = s.steps();
+    try {
+      s.step();
+      FAIL("expected a NumericalError");
+    } catch (const NumericalError& e) {
+      CHECK(std::string(e.what()).find("stage") != std::string::npos);
+    }
+    CHECK(m.particles.position.raw() == positions);
+    CHECK(m.particles.velocity.raw() == velocities);
+    CHECK(s.steps() == steps);
+    CHECK(m.check() == "");
+  }
+}
+
+TEST_CASE("physical masses: a free particle without mass is refused, a fully locked one is fine") {
+  Model m;
+  ParticleId a = m.add_particle(Vec3(0, 0, 0)), b = m.add_particle(Vec3(1, 0, 0));
+  m.add_cable(a, b, Section{1e4, 0, 0, 0});
+  m.set_lock(a, kLockTranslation);
+  m.set_load(b, Vec3(1, 0, 0));
+  Solver s(m);
+  s.settings.mass_mode = MassMode::Physical;
+  try {
+    s.step();
+    FAIL("expected a ModelError");
+  } catch (const ModelError& e) {
+    CHECK(std::string(e.what()).find("particle " + std::to_string(b) + " has no physical mass") != std::string::npos);
+  }
+  CHECK(m.particles.position[b] == Vec3(1, 0, 0));
+  m.set_point_mass(b, 3);
+  s.settings.dt = 1e-3;
+  s.step();  // leapfrog's half kick: v = dt/2 F/m, x += dt v
+  CHECK(m.particles.position[b].x() == doctest::Approx(1 + 0.5e-6 / 3).epsilon(1e-12));
+}
+
+TEST_CASE("a step allocates nothing once the scratch buffers fit the model") {
+  for (Integrator integrator : kIntegrators) {
+    const std::string name = integrator_name(integrator);
+    CAPTURE(name);
+    Model m;
+    std::vector<ParticleId> ps;
+    for (int i = 0; i <= 10; ++i) ps.push_back(m.add_particle(Vec3(i, 0, 0.01 * i * (10 - i))));
+    m.add_beam(ps, Section{1e6, 1e2, 0, 1});
+    m.gravity = Vec3(0, 0, -9.81);
+    m.set_lock(ps.front(), kLockTranslation);
+    m.set_lock(ps.back(), kLockTranslation);
+    Solver s(m);
+    s.settings.integrator = integrator;
+    s.step();  // sizes the scratch buffers
+    g_allocations = 0;
+    g_counting = true;
+    for (int i = 0; i < 200; ++i) s.step();
+    g_counting = false;
+    CHECK(g_allocations == 0);
+  }
+}
