@@ -155,7 +155,8 @@ void record_settings(Scene& s) {
   const SolverSettings& st = s.solver.settings;
   s.record(std::string("settings dt=") + Trace::number(st.dt) + " damping=" + damping_name(st.damping) +
            " viscous=" + Trace::number(st.viscous) + " geometric_factor=" + Trace::number(st.geometric_factor) +
-           " mass_factor=" + Trace::number(st.mass_factor));
+           " mass_factor=" + Trace::number(st.mass_factor) + " integrator=" + integrator_name(st.integrator) +
+           " mass_mode=" + mass_mode_name(st.mass_mode));
   s.record("gravity " + Trace::vec(s.model.gravity));
 }
 

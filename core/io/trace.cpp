@@ -169,6 +169,15 @@ void replay_trace(std::istream& in, const std::string& name, Model& m, Solver& s
           if (eq == std::string::npos) throw ModelError(r.where + ": expected key=value, got '" + kv + "'");
           const std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
           if (key == "damping") s.settings.damping = damping_from(value, r.where);
+          else if (key == "integrator") {
+            auto i = parse_integrator(value);
+            if (!i) throw ModelError(r.where + ": unknown integrator '" + value + "'");
+            s.settings.integrator = *i;
+          } else if (key == "mass_mode") {
+            auto mm = parse_mass_mode(value);
+            if (!mm) throw ModelError(r.where + ": unknown mass mode '" + value + "'");
+            s.settings.mass_mode = *mm;
+          }
           else {
             double x = std::strtod(value.c_str(), nullptr);
             if (key == "dt") s.settings.dt = x;
