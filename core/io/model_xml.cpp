@@ -183,6 +183,8 @@ std::string write_document(const Model& m, const SolverSettings& s) {
   w.attr("viscous", s.viscous);
   w.attr("geometric_factor", s.geometric_factor);
   w.attr("mass_factor", s.mass_factor);
+  w.attr("integrator", integrator_name(s.integrator));
+  w.attr("mass_mode", mass_mode_name(s.mass_mode));
   w.close();
 
   w.open("gravity");
@@ -458,6 +460,16 @@ void Reader::read_solver(const tinyxml2::XMLElement* e, SolverSettings& s) const
   s.viscous = a.real("viscous", s.viscous);
   s.geometric_factor = a.real("geometric_factor", s.geometric_factor);
   s.mass_factor = a.real("mass_factor", s.mass_factor);
+  if (const char* name = a.raw("integrator")) {
+    auto i = parse_integrator(name);
+    if (!i) a.bad("integrator", std::string("is \"") + name + "\"; expected leapfrog, symplectic_euler, velocity_verlet, midpoint or rk4");
+    s.integrator = *i;
+  }
+  if (const char* name = a.raw("mass_mode")) {
+    auto mm = parse_mass_mode(name);
+    if (!mm) a.bad("mass_mode", std::string("is \"") + name + "\"; expected fictitious or physical");
+    s.mass_mode = *mm;
+  }
   if (!(s.dt > 0)) a.bad("dt", "must be > 0");
   if (!(s.viscous >= 0)) a.bad("viscous", "must be >= 0");
   if (!(s.geometric_factor >= 0)) a.bad("geometric_factor", "must be >= 0");

@@ -3,7 +3,7 @@
 // as one XML document, written and read with tinyxml2.
 //
 //   <tendril version="1">
-//     <solver dt damping viscous geometric_factor mass_factor/>
+//     <solver dt damping viscous geometric_factor mass_factor integrator mass_mode/>
 //     <gravity x y z/>
 //     <particles>
 //       <particle id x y z vx vy vz lock passive point_mass fx fy fz/>
