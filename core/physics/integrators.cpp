@@ -18,10 +18,10 @@ namespace tendril {
 // the first kick from velocities at the step's time (at rest, or left by a
 // synchronous integrator): Leapfrog is not self-starting and kicks half a
 // step, Symplectic Euler kicks a whole one.
-void Solver::integrate_leapfrog() { kick_drift(half_step_ ? 1.0 : 0.5); }
-void Solver::integrate_symplectic_euler() { kick_drift(1.0); }
+void Solver::integrate_leapfrog() { kick_drift(half_step_); }
+void Solver::integrate_symplectic_euler() { kick_drift(true); }
 
-void Solver::kick_drift(double first) {
+void Solver::kick_drift(bool whole_kick) {
   Particles& P = model_.particles;
   const std::uint8_t* active = P.active.data();
   const std::uint8_t* lock = P.lock.data();
@@ -32,7 +32,7 @@ void Solver::kick_drift(double first) {
     A = (1 - settings.viscous / 2) / (1 + settings.viscous / 2);
     B = (1 + A) / 2;
   }
-  const double keep = first == 1.0 ? A : 1.0;
+  const double first = whole_kick ? 1.0 : 0.5, keep = whole_kick ? A : 1.0;
   double momentum2 = 0, ke = 0;
   Vec3* v = P.velocity.data();
   const Vec3* F = P.force.data();

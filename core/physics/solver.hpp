@@ -119,7 +119,7 @@ class Solver {
   // integrators.cpp
   void integrate_leapfrog();
   void integrate_symplectic_euler();
-  void kick_drift(double first);  // both: `first` is the first kick's fraction of dt
+  void kick_drift(bool whole_kick);  // both; Leapfrog's first kick from v(t) is half a step
   void integrate_velocity_verlet();
   void integrate_midpoint();
   void integrate_rk4();

@@ -247,3 +247,33 @@ TEST_CASE("a step allocates nothing once the scratch buffers fit the model") {
     CHECK(g_allocations == 0);
   }
 }
+
+TEST_CASE("integrators: viscous damping reaches the same equilibrium with every integrator") {
+  auto solve = [](Integrator integrator, Damping damping) {
+    Model m;
+    std::vector<ParticleId> ps;
+    for (int i = 0; i <= 8; ++i) ps.push_back(m.add_particle(Vec3(0.5 * i, 0, 0)));
+    m.add_beam(ps, Section{1e7, 1e3, 0, 1});
+    m.gravity = Vec3(0, 0, -9.81);
+    m.set_lock(ps.front(), kLockTranslation);
+    m.set_lock(ps.back(), kLockTranslation);
+    m.set_load(ps[3], Vec3(0, 50, -100));
+    Solver s(m);
+    s.settings.integrator = integrator;
+    s.settings.damping = damping;
+    s.settings.viscous = 0.05;
+    RunResult r = s.run(1e-7, 1'000'000);
+    REQUIRE(r.converged);
+    MESSAGE(std::string(integrator_name(integrator)) << " + " << std::string(damping_name(damping)) << ": steps=" << r.steps);
+    return std::pair{m.particles.position[ps[3]], s.reaction(ps.front()) + s.reaction(ps.back())};
+  };
+  const auto [reference, support] = solve(Integrator::Leapfrog, Damping::Kinetic);
+  CHECK(support.y() == doctest::Approx(-50).epsilon(1e-6));
+  for (Integrator integrator : kIntegrators) {
+    const std::string name = integrator_name(integrator);
+    CAPTURE(name);
+    const auto [x, reaction] = solve(integrator, Damping::Viscous);
+    CHECK((x - reference).norm() < 1e-6 * reference.norm());
+    CHECK((reaction - support).norm() < 1e-5);
+  }
+}
