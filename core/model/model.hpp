@@ -58,6 +58,9 @@ class Model {
   BlockId add_beam(const std::vector<ParticleId>& ps, const Section& s, bool closed = false);
   // Rule 10: from a particle along `span` (its full length) with n segments.
   BlockId add_beam_from(ParticleId start, const Vec3& span, int segments, const Section& s);
+  // Rule 9: grows an open beam by one segment from its end particle `end` to
+  // the particle `p` (rest length: their distance). extend.cpp.
+  void extend_beam(BlockId b, ParticleId end, ParticleId p);
   ParticleId insert_particle(ParticleId a, ParticleId b);  // rule 13
   void remove_from_beam(ParticleId p);                     // rule 11
   void delete_beam(BlockId b);                              // rule 18

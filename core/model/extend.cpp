@@ -1,0 +1,33 @@
+// Rule 9: a spline beam that grows particle by particle (thesis fig. 4.26),
+// the way an agent's children become a beam.
+#include "model/model.hpp"
+
+namespace tendril {
+
+void Model::extend_beam(BlockId b, ParticleId end, ParticleId p) {
+  require_block(b, "extend_beam");
+  require_particle(end, "extend_beam");
+  require_particle(p, "extend_beam");
+  const Block& blk = blocks[b];
+  if (blk.kind != BlockKind::Beam || blk.closed)
+    throw ModelError("extend_beam: block " + std::to_string(b) + " is not an open beam");
+  // The end dart: a dart of `end` in this beam without an alpha1 partner.
+  Dart tip = kNoDart;
+  for (Dart d : darts_of(end))
+    if (dart_block[d] == b && map.is_free(1, d)) tip = d;
+  if (tip == kNoDart)
+    throw ModelError("extend_beam: particle " + std::to_string(end) + " is not an end of beam " + std::to_string(b));
+  for (Dart d : darts_of(p))
+    if (dart_block[d] == b) throw ModelError("extend_beam: particle " + std::to_string(p) + " is already on the beam");
+  const double length = (particles.position[p] - particles.position[end]).norm();
+  if (!(length > 0)) throw ModelError("extend_beam: particles " + std::to_string(end) + " and " + std::to_string(p) + " coincide");
+  Dart d = new_dart(b, end), e = new_dart(b, p);
+  map.link(0, d, e);
+  map.link(1, tip, d);
+  set_edge_rest_length(d, length);
+  add_bar(d);
+  add_hinge(tip);
+  if (blocks[b].dart == tip) blocks[b].dart = e;  // grown at its start: the path now starts at p
+}
+
+}  // namespace tendril
