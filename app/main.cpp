@@ -8,12 +8,13 @@
 #include "io/model_xml.hpp"
 #include "io/obj.hpp"
 #include "io/trace.hpp"
+#include "agents_library.hpp"
 #include "lua_host.hpp"
 
 namespace {
 
 const char* const kUsage =
-    "usage: tendril run SCENE.lua [--out DIR] [--steps N] [--seed S] [--quiet]\n"
+    "usage: tendril run SCENE.lua [--out DIR] [--steps N] [--seed S] [--param NAME=VALUE]... [--quiet]\n"
     "       tendril replay JOURNAL [--out DIR]\n"
     "\n"
     "  run      runs a Lua scene (docs/lua-api.md)\n"
@@ -22,6 +23,7 @@ const char* const kUsage =
     "  --out    directory for the scene's outputs, tendril.out(name) (default: out)\n"
     "  --steps  caps the steps of every run{} and step() of the scene\n"
     "  --seed   seeds math.random and tendril.seed (default: 1)\n"
+    "  --param  a value for tendril.param(NAME, default) in the scene (repeatable)\n"
     "  --quiet  no progress lines on stderr\n";
 
 bool parse_int(const std::string& s, long long& out) {
@@ -85,6 +87,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   tendril::SceneOptions options;
+  options.preload = tendril::agents_library();
   std::string scene;
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -110,6 +113,14 @@ int main(int argc, char** argv) {
         return 2;
       }
       options.seed = n;
+    } else if (arg == "--param") {
+      const std::string kv = value("--param");
+      const auto eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0) {
+        std::fprintf(stderr, "tendril: --param needs NAME=VALUE, got '%s'\n", kv.c_str());
+        return 2;
+      }
+      options.params.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
     } else if (arg == "--quiet") {
       options.progress = false;
     } else if (!arg.empty() && arg[0] == '-') {

@@ -44,6 +44,9 @@ int run_scene(const std::string& path, const SceneOptions& options, std::string*
   if (luaL_loadbuffer(L, lua::kRuleLibrary, std::strlen(lua::kRuleLibrary), "=rules/library.lua") != LUA_OK ||
       lua_pcall(L, 0, 0, 0) != LUA_OK)
     return fail(lua_tostring(L, -1));
+  for (const auto& [name, source] : options.preload)
+    if (luaL_loadbuffer(L, source.data(), source.size(), ("=" + name).c_str()) != LUA_OK || lua_pcall(L, 0, 0, 0) != LUA_OK)
+      return fail(lua_tostring(L, -1));
 
   lua_pushcfunction(L, traceback);
   if (luaL_loadfile(L, path.c_str()) != LUA_OK) return fail(lua_tostring(L, -1));

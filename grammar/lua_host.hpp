@@ -2,6 +2,8 @@
 // Runs scenes in real Lua 5.4 with the `tendril` module (docs/lua-api.md).
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace tendril {
 
@@ -10,6 +12,11 @@ struct SceneOptions {
   std::int64_t max_steps = -1;        // caps every run{}; -1: no cap
   std::int64_t seed = 1;              // math.randomseed and tendril.seed
   bool progress = true;               // progress lines on stderr for long runs
+  // Lua chunks (name, source) run before the scene, after the rule library:
+  // the layers above the grammar (agents) hand themselves in here.
+  std::vector<std::pair<std::string, std::string>> preload;
+  // --param NAME=VALUE pairs, read by tendril.param(name, default).
+  std::vector<std::pair<std::string, std::string>> params;
 };
 
 // Runs the scene file. Returns 0 on success; on a Lua error returns 1 after

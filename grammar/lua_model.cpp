@@ -11,6 +11,7 @@
 #include "io/model_xml.hpp"
 #include "io/obj.hpp"
 #include "lua_args.hpp"
+#include "lua_query.hpp"
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
 #include "model/model.hpp"
@@ -184,6 +185,20 @@ int l_load(lua_State* L) {
   Scene& s = push_new_scene(L);
   load_model_xml(path, s.model, s.solver.settings);
   s.record("open " + path);
+  return 1;
+}
+
+// tendril.param(name, default): the --param value (a number when it reads as
+// one, else a string), or the default.
+int l_param(lua_State* L) {
+  if (lua_type(L, 1) != LUA_TSTRING) arg_error("tendril.param", 1, "expected a parameter name");
+  const std::string name = lua_tostring(L, 1);
+  for (const auto& [key, value] : g_options->params) {
+    if (key != name) continue;
+    if (lua_stringtonumber(L, value.c_str()) == 0) lua_pushstring(L, value.c_str());
+    return 1;
+  }
+  lua_settop(L, 2);
   return 1;
 }
 
@@ -796,6 +811,7 @@ void register_model_meta(lua_State* L) {
   set_fn<l_save>(L, "save");
   set_fn<l_save_obj>(L, "save_obj");
   add_rule_methods(L);
+  add_query_methods(L);
   lua_setfield(L, -2, "__index");
   lua_pop(L, 1);
   for (const char* meta : {kParticleMeta, kBlockMeta}) {
@@ -819,6 +835,7 @@ void open_tendril(lua_State* L, const SceneOptions& options) {
   set_fn<l_new_model>(L, "model");
   set_fn<l_load>(L, "load");
   set_fn<l_out>(L, "out");
+  set_fn<l_param>(L, "param");
   add_rule_constructor(L);
   lua_pushinteger(L, options.seed);
   lua_setfield(L, -2, "seed");

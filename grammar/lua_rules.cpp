@@ -19,6 +19,7 @@ struct Trigger {
   bool on_equilibrium = false;
   std::int64_t max = -1;       // applications, -1: unlimited
   std::int64_t applied = 0;
+  int failures = 0;  // in a row
 };
 
 namespace {
@@ -398,9 +399,16 @@ bool fire_triggers(lua_State* L, Scene& s, bool converged) {
       lua_settop(L, base);
       if (out.applied) {
         ++t->applied;
+        t->failures = 0;
         changed = true;
-      } else if (s.options->progress && out.message.find("is not applicable") == std::string::npos) {
-        std::fprintf(stderr, "[tendril] %s\n", out.message.c_str());
+      } else if (out.message.find("is not applicable") == std::string::npos) {
+        // A failing production is reported once; after ten failures in a row
+        // the trigger is switched off rather than failing at every step.
+        if (t->failures++ == 0) std::fprintf(stderr, "[tendril] %s\n", out.message.c_str());
+        if (t->failures >= 10) {
+          std::fprintf(stderr, "[tendril] rule '%s' failed 10 times in a row; its trigger is off\n", rule_name(L, rule).c_str());
+          t->max = t->applied;
+        }
       }
     }
     lua_settop(L, rule - 1);

@@ -11,6 +11,7 @@
 #include "model/journal.hpp"
 #include "model/model.hpp"
 #include "physics/solver.hpp"
+#include "query/neighbours.hpp"
 
 namespace tendril::lua {
 
@@ -25,6 +26,9 @@ struct Scene {
   Solver solver{model};
   Journal journal;
   Trace trace;  // the replayable record of every change (io/trace.hpp)
+  // Rebuilt when the solver stepped or the trace grew since the last query.
+  NeighbourIndex neighbours;
+  std::pair<std::uint64_t, std::size_t> neighbours_built_at{~0ull, 0};
   void record(const std::string& line) { trace.record(solver, line); }
   std::vector<Trigger*> triggers;  // owned by lua_rules.cpp, freed with the scene
   const SceneOptions* options = nullptr;

@@ -125,6 +125,10 @@ void replay_trace(std::istream& in, const std::string& name, Model& m, Solver& s
         std::vector<Model::Quad> quads;
         for (std::size_t k = 0; k < ids.size(); k += 4) quads.push_back({ids[k], ids[k + 1], ids[k + 2], ids[k + 3]});
         m.add_patch(quads, sec);
+      } else if (op == "extend") {
+        BlockId b = r.id();
+        ParticleId end = r.id();
+        m.extend_beam(b, end, r.id());
       } else if (op == "delete_particle") m.delete_particle(r.id());
       else if (op == "merge") m.merge(r.rest());
       else if (op == "explode") m.explode(r.id());

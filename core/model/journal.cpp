@@ -22,6 +22,7 @@ std::string Journal::assembly_sequence() const {
   std::string out = "#  step  time  rule  arguments  created  deleted\n";
   std::size_t n = 0;
   for (const JournalEntry& e : entries) {
+    if (e.changes.empty()) continue;  // moves and settings are in the trace, not the assembly
     char head[96];
     std::snprintf(head, sizeof head, "%zu\t%llu\t%.6g\t", ++n, static_cast<unsigned long long>(e.step), e.time);
     const std::string created = join(ids("p", e.changes.created_particles), ids("b", e.changes.created_blocks));

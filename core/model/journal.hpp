@@ -20,7 +20,8 @@ struct JournalEntry {
 
 struct Journal {
   std::vector<JournalEntry> entries;
-  // One line per production: step, time, rule, arguments, created, deleted.
+  // One line per production that created or deleted something: step, time,
+  // rule, arguments, created, deleted.
   std::string assembly_sequence() const;
 };
 

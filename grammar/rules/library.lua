@@ -172,3 +172,22 @@ define("drop_double", "drop-like loop with a double joint: first two onto the la
   end)
 
 tendril.rules = rules
+
+-- tendril.report(m, extra): m:summary() and the extra fields as one CSV row
+-- (with its header) in the run's output directory: what `tendril sweep`
+-- collects from every run.
+function tendril.report(m, extra)
+  local row = m:summary()
+  for k, v in pairs(extra or {}) do row[k] = v end
+  local keys = {}
+  for k in pairs(row) do keys[#keys + 1] = k end
+  table.sort(keys)
+  local values = {}
+  for i, k in ipairs(keys) do
+    local v = row[k]
+    values[i] = type(v) == "number" and string.format("%.10g", v) or tostring(v)
+  end
+  local f = assert(io.open(tendril.out("summary.csv"), "w"))
+  f:write(table.concat(keys, ","), "\n", table.concat(values, ","), "\n")
+  f:close()
+end

@@ -1,0 +1,106 @@
+#include "lua_query.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "lua_args.hpp"
+#include "lua_rules.hpp"
+#include "lua_scene.hpp"
+
+namespace tendril::lua {
+
+namespace {
+
+// m:neighbours(centre, radius) -> particles within radius, nearest first;
+// centre is a particle (left out of the answer) or {x, y, z}.
+int l_neighbours(lua_State* L) {
+  const char* fn = "neighbours";
+  Scene& s = check_scene(L, fn);
+  Vec3 centre;
+  ParticleId self = kNone;
+  if (luaL_testudata(L, 2, kParticleMeta)) {
+    self = check_particle(L, 2, s, fn);
+    centre = s.model.particles.position[self];
+  } else {
+    centre = check_vec3(L, 2, fn);
+  }
+  const double radius = check_number(L, 3, fn);
+  if (!(radius > 0)) arg_error(fn, 3, "the radius must be > 0");
+  const std::pair<std::uint64_t, std::size_t> now{s.solver.steps(), s.trace.mark().lines};
+  const double cell = s.neighbours.cell();
+  if (now != s.neighbours_built_at || radius > 4 * cell || radius < cell / 4) {
+    s.neighbours.build(s.model.particles, radius);
+    s.neighbours_built_at = now;
+  }
+  std::vector<ParticleId> found = s.neighbours.within(s.model.particles, centre, radius);
+  lua_createtable(L, int(found.size()), 0);
+  lua_Integer n = 0;
+  for (ParticleId p : found) {
+    if (p == self) continue;
+    push_particle(L, s, p);
+    lua_rawseti(L, -2, ++n);
+  }
+  return 1;
+}
+
+// m:extend(beam, end, p): rule 9, the beam grows from its end particle to p.
+int l_extend(lua_State* L) {
+  const char* fn = "extend";
+  Scene& s = check_scene(L, fn);
+  JournalScope record(s, "extend", describe_args(L, 2, lua_gettop(L)));
+  BlockId b = check_block(L, 2, s, fn);
+  ParticleId end = check_particle(L, 3, s, fn), p = check_particle(L, 4, s, fn);
+  s.model.extend_beam(b, end, p);
+  s.record("extend " + std::to_string(b) + " " + std::to_string(end) + " " + std::to_string(p));
+  record.done();
+  return 0;
+}
+
+// m:summary(): figures of a grown structure for reports and sweeps.
+int l_summary(lua_State* L) {
+  Scene& s = check_scene(L, "summary");
+  const Model& m = s.model;
+  const Vec3* x = m.particles.position.data();
+  double beam_length = 0, max_strain = 0, min_radius = std::numeric_limits<double>::infinity();
+  for (const Bar& b : m.bars.items) {
+    const double L = (x[b.j] - x[b.i]).norm();
+    max_strain = std::max(max_strain, std::abs(L - b.rest_length) / b.rest_length);
+    if (m.blocks[m.dart_block[b.dart]].kind == BlockKind::Beam) beam_length += L;
+  }
+  for (const Hinge& h : m.hinges.items) {
+    const Vec3 a = x[h.j] - x[h.i], c = x[h.k] - x[h.j];
+    const double sin_alpha = a.cross(c).norm() / (a.norm() * c.norm());
+    if (sin_alpha > 0) min_radius = std::min(min_radius, (x[h.k] - x[h.i]).norm() / (2 * sin_alpha));
+  }
+  lua_createtable(L, 0, 8);
+  auto set = [&](const char* k, double v) {
+    lua_pushnumber(L, v);
+    lua_setfield(L, -2, k);
+  };
+  set("particles", double(m.particle_count()));
+  set("beams", double(m.block_count(BlockKind::Beam)));
+  set("cables", double(m.block_count(BlockKind::Cable)));
+  set("patches", double(m.block_count(BlockKind::Patch)));
+  set("beam_length", beam_length);
+  set("min_bending_radius", min_radius);
+  set("max_strain", max_strain);
+  set("steps", double(s.solver.steps()));
+  return 1;
+}
+
+template <lua_CFunction F>
+void set_fn(lua_State* L, const char* name) {
+  lua_pushcfunction(L, guarded<F>);
+  lua_setfield(L, -2, name);
+}
+
+}  // namespace
+
+void add_query_methods(lua_State* L) {
+  set_fn<l_neighbours>(L, "neighbours");
+  set_fn<l_extend>(L, "extend");
+  set_fn<l_summary>(L, "summary");
+}
+
+}  // namespace tendril::lua
