@@ -11,15 +11,20 @@
 #include "agents_library.hpp"
 #include "lua_host.hpp"
 
+int run_sweep(int argc, char** argv);  // sweep_command.cpp
+
 namespace {
 
 const char* const kUsage =
     "usage: tendril run SCENE.lua [--out DIR] [--steps N] [--seed S] [--param NAME=VALUE]... [--quiet]\n"
     "       tendril replay JOURNAL [--out DIR]\n"
+    "       tendril sweep SCENE.lua --param NAME=V1,V2,... --seeds A..B [--jobs N] [--out DIR] [--steps N]\n"
     "\n"
     "  run      runs a Lua scene (docs/lua-api.md)\n"
     "  replay   rebuilds a model from a journal written by m:save_journal (docs/rules.md),\n"
     "           prints its assembly sequence and writes DIR/model.xml and DIR/model.obj\n"
+    "  sweep    runs a scene for every combination of parameters and seeds in N processes;\n"
+    "           one CSV row per run in DIR/sweep.csv, each run's outputs in DIR/run-K\n"
     "  --out    directory for the scene's outputs, tendril.out(name) (default: out)\n"
     "  --steps  caps the steps of every run{} and step() of the scene\n"
     "  --seed   seeds math.random and tendril.seed (default: 1)\n"
@@ -82,6 +87,14 @@ int main(int argc, char** argv) {
   }
   const std::string command = argv[1];
   if (command == "replay") return replay(argc, argv);
+  if (command == "sweep") {
+    try {
+      return run_sweep(argc, argv);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "tendril: sweep: %s\n", e.what());
+      return 1;
+    }
+  }
   if (command != "run") {
     std::fprintf(stderr, "tendril: unknown command '%s'\n\n%s", command.c_str(), kUsage);
     return 2;
