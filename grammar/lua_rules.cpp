@@ -63,6 +63,7 @@ struct Outcome {
   bool applied = false;
   std::string message;
   int results = 0;  // values the production returned, left on the stack
+  bool changed = false;  // the production changed the model (not just ran)
 };
 
 // The transaction around one rule application (DESIGN principle 2).
@@ -82,7 +83,7 @@ Outcome apply_rule(lua_State* L, Scene& s, int rule_idx, int first_arg, int narg
       throw LuaArgError("rule '" + name + "' failed: " + err);
     }
     lua_remove(L, base);
-    return {true, "", lua_gettop(L) - base + 1};
+    return {true, "", lua_gettop(L) - base + 1, true};
   }
   JournalEntry entry;
   entry.step = s.solver.steps();
@@ -133,8 +134,9 @@ Outcome apply_rule(lua_State* L, Scene& s, int rule_idx, int first_arg, int narg
   }
   m.commit_transaction();
   m.changes = nullptr;
-  s.journal.entries.push_back(std::move(entry));
-  return {true, "", results};
+  const bool changed = !entry.changes.empty() || s.trace.mark().lines != mark.lines;
+  if (changed) s.journal.entries.push_back(std::move(entry));  // an application that changed nothing is no production
+  return {true, "", results, changed};
 }
 
 // --- tendril.rule{name =, axiom =, production =} --------------------------------
@@ -400,7 +402,7 @@ bool fire_triggers(lua_State* L, Scene& s, bool converged) {
       if (out.applied) {
         ++t->applied;
         t->failures = 0;
-        changed = true;
+        changed |= out.changed;
       } else if (out.message.find("is not applicable") == std::string::npos) {
         // A failing production is reported once; after ten failures in a row
         // the trigger is switched off rather than failing at every step.
