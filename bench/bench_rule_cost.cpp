@@ -3,7 +3,7 @@
 // and on 1 000 000 particles, within 2x), against the same change followed
 // by a full rebuild_elements() (the approach thesis 6.1 criticises).
 //
-//   bench_rule_cost [--sizes 1K,100K,1M] [--apps 200] [--steps-between 1]
+//   bench_rule_cost [--sizes 1K,10K,100K,1M] [--apps 200] [--steps-between 1]
 //
 // Only the rule call (and, in the second variant, the rebuild) is timed; one
 // Solver::step() runs between applications so the model keeps integrating and
@@ -146,7 +146,7 @@ Run run(std::size_t particles, std::size_t apps, int steps_between, bool rebuild
 
 int usage(const char* argv0, int code) {
   std::fprintf(code ? stderr : stdout,
-               "usage: %s [--sizes 1K,100K,1M] [--apps N] [--steps-between K] [--rebuild-seconds S]\n"
+               "usage: %s [--sizes 1K,10K,100K,1M] [--apps N] [--steps-between K] [--rebuild-seconds S]\n"
                "  --sizes            particle counts (K/M suffixes)\n"
                "  --apps             applications of each rule per size (default 200)\n"
                "  --steps-between    solver steps before each application (default 1)\n"
@@ -158,7 +158,7 @@ int usage(const char* argv0, int code) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::size_t> sizes{1'000, 100'000, 1'000'000};
+  std::vector<std::size_t> sizes{1'000, 10'000, 100'000, 1'000'000};
   std::size_t apps = 200;
   double rebuild_budget = 4.0;
   int steps_between = 1;
