@@ -82,6 +82,16 @@ define("beam", "rule 8: a spline beam through particles",
   end,
   function(m, options) return m:beam(options) end)
 
+define("grow", "rule 9: grow a spline beam from its end particle to a particle",
+  function(m, beam, tip, p)
+    local ok, why = kind_is(m, beam, "beam")
+    if not ok then return false, why end
+    if m:closed(beam) then return false, string.format("beam %d is a ring", beam.id) end
+    local ps = m:particles(beam)
+    return tip == ps[1] or tip == ps[#ps], string.format("particle %d is not an end of beam %d", tip.id, beam.id)
+  end,
+  function(m, beam, tip, p) m:extend(beam, tip, p) end)
+
 define("beam_from", "rule 10: a spline beam from a particle, a direction and subdivisions", nil,
   function(m, p, direction, segments, section)
     local options = { from = p, direction = direction, segments = segments }
