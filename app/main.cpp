@@ -19,12 +19,15 @@ const char* const kUsage =
     "usage: tendril run SCENE.lua [--out DIR] [--steps N] [--seed S] [--param NAME=VALUE]... [--quiet]\n"
     "       tendril replay JOURNAL [--out DIR]\n"
     "       tendril sweep SCENE.lua --param NAME=V1,V2,... --seeds A..B [--jobs N] [--out DIR] [--steps N]\n"
+    "       tendril validate [--csv FILE] [--plots DIR] [--quick] [--case NAME]\n"
     "\n"
     "  run      runs a Lua scene (docs/lua-api.md)\n"
     "  replay   rebuilds a model from a journal written by m:save_journal (docs/rules.md),\n"
     "           prints its assembly sequence and writes DIR/model.xml and DIR/model.obj\n"
     "  sweep    runs a scene for every combination of parameters and seeds in N processes;\n"
     "           one CSV row per run in DIR/sweep.csv, each run's outputs in DIR/run-K\n"
+    "  validate runs every validation case with each integrator and resolution, prints\n"
+    "           error, steps and wall time, fails if a default is outside its tolerance\n"
     "  --out    directory for the scene's outputs, tendril.out(name) (default: out)\n"
     "  --steps  caps the steps of every run{} and step() of the scene\n"
     "  --seed   seeds math.random and tendril.seed (default: 1)\n"
@@ -80,6 +83,8 @@ int replay(int argc, char** argv) {
 
 }  // namespace
 
+int run_validate(int argc, char** argv);  // validate_command.cpp
+
 int main(int argc, char** argv) {
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);
@@ -95,6 +100,7 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
+  if (command == "validate") return run_validate(argc, argv);
   if (command != "run") {
     std::fprintf(stderr, "tendril: unknown command '%s'\n\n%s", command.c_str(), kUsage);
     return 2;

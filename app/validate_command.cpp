@@ -1,0 +1,116 @@
+// `tendril validate [--csv FILE] [--plots DIR] [--quick] [--case NAME]`: runs
+// every validation case (validate/cases/) with each integrator, formulation
+// and resolution, prints the table, and fails when a case under its default
+// settings misses its tolerance.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "registry.hpp"
+#include "report.hpp"
+#include "runner.hpp"
+
+namespace {
+
+const char* const kValidateUsage =
+    "usage: tendril validate [--csv FILE] [--plots DIR] [--quick] [--case NAME]...\n"
+    "  --csv    writes the table's rows to FILE\n"
+    "  --plots  writes DIR/CASE.png (error against wall time, log-log; needs gnuplot)\n"
+    "  --quick  fewer resolutions (for CI)\n"
+    "  --case   runs only this case (repeatable)\n";
+
+}  // namespace
+
+int run_validate(int argc, char** argv) {
+  using namespace tendril::validate;
+  std::string csv, plots;
+  RunOptions options;
+  std::vector<const Case*> selected;
+  try {
+    for (int i = 2; i < argc; ++i) {
+      const std::string arg = argv[i];
+      auto value = [&]() -> std::string {
+        if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
+        return argv[++i];
+      };
+      if (arg == "--csv") csv = value();
+      else if (arg == "--plots") plots = value();
+      else if (arg == "--quick") options.quick = true;
+      else if (arg == "--case") {
+        const std::string name = value();
+        const Case* c = find_case(name);
+        if (!c) {
+          std::string known;
+          for (const Case& k : cases()) known += " " + k.name;
+          throw std::invalid_argument("no case '" + name + "'; the cases are:" + known);
+        }
+        if (std::find(selected.begin(), selected.end(), c) == selected.end()) selected.push_back(c);
+      } else if (arg == "--help" || arg == "-h") {
+        std::fputs(kValidateUsage, stdout);
+        return 0;
+      } else {
+        throw std::invalid_argument("unexpected argument '" + arg + "'");
+      }
+    }
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "tendril: validate: %s\n\n%s", e.what(), kValidateUsage);
+    return 2;
+  }
+  if (selected.empty())
+    for (const Case& c : cases()) selected.push_back(&c);
+  if (options.quick) options.max_runs = 1;
+
+  bool plot = !plots.empty();
+  if (plot && !gnuplot_available()) {
+    std::fprintf(stderr, "tendril: validate: gnuplot not found (Debian: apt-get install gnuplot-nox); no plots\n");
+    plot = false;
+  }
+  if (plot) std::filesystem::create_directories(plots);
+
+  for (const Case* c : selected)
+    std::printf("%s: %s\n  segments = %s; default %s, %s damping, %d segments, %s\n", c->name.c_str(),
+                c->reference.c_str(), c->resolution.c_str(), tendril::integrator_name(c->defaults.solver.integrator),
+                tendril::damping_name(c->defaults.solver.damping), c->defaults.segments,
+                c->defaults.formulation.c_str());
+  std::printf("\n");
+  Table table(stdout, selected);
+  table.header();
+  std::vector<Row> rows, failed_defaults;
+  for (const Case* c : selected) {
+    for (const Setting& s : matrix(*c, options.quick)) {
+      rows.push_back(run_setting(*c, s, options));
+      table.row(rows.back());
+      if (rows.back().is_default && !rows.back().passes()) failed_defaults.push_back(rows.back());
+    }
+    if (plot) {
+      const std::string problem = tendril::validate::plot(*c, rows, plots);
+      if (!problem.empty()) std::fprintf(stderr, "tendril: validate: %s\n", problem.c_str());
+    }
+  }
+
+  if (!csv.empty()) {
+    try {
+      write_csv(csv, rows);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "tendril: validate: %s\n", e.what());
+      return 1;
+    }
+  }
+  if (plot) std::printf("\nplots: %s/<case>.png\n", plots.c_str());
+  if (!failed_defaults.empty()) {
+    for (const Row& r : failed_defaults) {
+      const std::string why = !r.failure.empty()     ? "failed: " + r.failure
+                              : !r.outcome.converged ? std::string("did not converge")
+                                                     : "error " + percent(r.outcome.error) + " % > tolerance " +
+                                                           percent(r.tolerance) + " %";
+      std::fprintf(stderr, "tendril: validate: %s under its default settings (%s, %s, %d segments): %s\n",
+                   r.case_name.c_str(), r.integrator.c_str(), r.formulation.c_str(), r.segments, why.c_str());
+    }
+    return 1;
+  }
+  std::printf("\nevery case within its tolerance under its default settings\n");
+  return 0;
+}

@@ -1,0 +1,23 @@
+#include "case.hpp"
+
+#include <chrono>
+#include <cmath>
+
+namespace tendril::validate {
+
+Outcome relax(Solver& solver, double tolerance, std::uint64_t max_steps) {
+  const std::uint64_t evaluations = solver.force_evaluations();
+  const auto start = std::chrono::steady_clock::now();
+  const RunResult r = solver.run(tolerance, max_steps);
+  const auto stop = std::chrono::steady_clock::now();
+  Outcome out;
+  out.steps = r.steps;
+  out.force_evaluations = solver.force_evaluations() - evaluations;
+  out.wall_ms = std::chrono::duration<double, std::milli>(stop - start).count();
+  out.converged = r.converged;
+  return out;
+}
+
+double relative_error(double measured, double exact) { return std::abs(measured / exact - 1); }
+
+}  // namespace tendril::validate

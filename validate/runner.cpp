@@ -1,0 +1,55 @@
+#include "runner.hpp"
+
+#include <algorithm>
+#include <exception>
+
+namespace tendril::validate {
+
+bool Row::passes() const { return failure.empty() && outcome.converged && outcome.error <= tolerance; }
+
+std::vector<Setting> matrix(const Case& c, bool quick) {
+  std::vector<Setting> out;
+  for (const std::string& formulation : c.formulations)
+    for (Integrator integrator : c.integrators)
+      for (int segments : quick ? c.quick_segments : c.segments) {
+        Setting s = c.defaults;
+        s.formulation = formulation;
+        s.segments = segments;
+        s.solver.integrator = integrator;
+        out.push_back(s);
+      }
+  return out;
+}
+
+bool is_default(const Case& c, const Setting& s) {
+  return s.formulation == c.defaults.formulation && s.segments == c.defaults.segments &&
+         s.solver.integrator == c.defaults.solver.integrator;
+}
+
+Row run_setting(const Case& c, const Setting& s, const RunOptions& options) {
+  Row row;
+  row.case_name = c.name;
+  row.integrator = integrator_name(s.solver.integrator);
+  row.formulation = s.formulation;
+  row.segments = s.segments;
+  row.is_default = is_default(c, s);
+  row.tolerance = c.tolerance;
+  try {
+    row.outcome = c.run(s);
+    double timed = row.outcome.wall_ms;
+    for (int run = 1; run < options.max_runs && timed < options.min_timed_ms; ++run) {
+      const Outcome again = c.run(s);
+      timed += again.wall_ms;
+      if (again.error != row.outcome.error || again.steps != row.outcome.steps) {
+        row.failure = "not deterministic: a repeat gave another error or step count";
+        break;
+      }
+      row.outcome.wall_ms = std::min(row.outcome.wall_ms, again.wall_ms);
+    }
+  } catch (const std::exception& e) {
+    row.failure = e.what();
+  }
+  return row;
+}
+
+}  // namespace tendril::validate

@@ -1,0 +1,36 @@
+#pragma once
+// Runs a case's matrix: every formulation x integrator x resolution.
+#include <string>
+#include <vector>
+
+#include "case.hpp"
+
+namespace tendril::validate {
+
+struct Row {
+  std::string case_name, integrator, formulation;
+  int segments = 0;
+  Outcome outcome;
+  bool is_default = false;
+  double tolerance = 0;  // the case's (it binds the default row only)
+  std::string failure;   // what the run threw, or why it cannot be trusted
+  // A default row passes when it ran, converged and is within tolerance.
+  bool passes() const;
+};
+
+struct RunOptions {
+  bool quick = false;  // Case::quick_segments instead of Case::segments
+  // A relaxation shorter than min_timed_ms is run again, up to max_runs in
+  // all, and the fastest run is reported: one run of a small model is too
+  // short to time. The repeats must agree bit for bit (DESIGN: deterministic).
+  double min_timed_ms = 200;
+  int max_runs = 10;
+};
+
+// In table order: formulation, then integrator, then segments. Every setting
+// starts from the case's default solver settings.
+std::vector<Setting> matrix(const Case& c, bool quick);
+bool is_default(const Case& c, const Setting& s);
+Row run_setting(const Case& c, const Setting& s, const RunOptions& options);
+
+}  // namespace tendril::validate
