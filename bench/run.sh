@@ -1,24 +1,39 @@
 #!/usr/bin/env bash
 # Builds the benchmarks (Release, in ./build) and runs them, printing tables.
 #
-#   bench/run.sh [throughput|rule_cost] [options...]
+#   bench/run.sh [throughput|rule_cost|meshing] [options...]
 #
-# Without a selector both benchmarks run and every option goes to both (e.g.
-# --sizes 10K,100K); with one, only that benchmark runs and gets the options
-# (e.g. `bench/run.sh rule_cost --apps 50`). See each binary's --help.
+# Without a selector every benchmark runs and the options go to the first two
+# (e.g. --sizes 10K,100K); with one, only that benchmark runs and gets the
+# options (e.g. `bench/run.sh rule_cost --apps 50`). See each binary's --help.
+# The meshing benchmark compares paving with Debian's gmsh, installed here
+# with apt-get when it is missing (benchmarks only: CI does not need it).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build"
 cd "$root"
 
-benches=(throughput rule_cost)
+benches=(throughput rule_cost meshing)
+selected=0
 case "${1:-}" in
-  throughput | rule_cost)
+  throughput | rule_cost | meshing)
     benches=("$1")
+    selected=1
     shift
     ;;
 esac
+
+if [[ " ${benches[*]} " == *" meshing "* ]] && ! command -v gmsh >/dev/null; then
+  echo "bench/run.sh: installing gmsh for the meshing benchmark" >&2
+  sudo=()
+  if [[ $(id -u) -ne 0 ]]; then sudo=(sudo); fi
+  export DEBIAN_FRONTEND=noninteractive
+  if ! "${sudo[@]}" apt-get install -y gmsh >/dev/null 2>&1; then
+    { "${sudo[@]}" apt-get update >/dev/null && "${sudo[@]}" apt-get install -y gmsh >/dev/null; } ||
+      echo "bench/run.sh: could not install gmsh; its rows will read n/a" >&2
+  fi
+fi
 
 generator=()
 if [[ ! -f "$build/CMakeCache.txt" ]] && command -v ninja >/dev/null; then
@@ -31,5 +46,9 @@ cmake --build "$build" --target "${targets[@]}"
 
 for b in "${benches[@]}"; do
   echo
-  "$build/bench/bench_$b" "$@"
+  if [[ $b == meshing && $selected -eq 0 ]]; then
+    "$build/bench/bench_$b"
+  else
+    "$build/bench/bench_$b" "$@"
+  fi
 done

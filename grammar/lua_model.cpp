@@ -11,6 +11,7 @@
 #include "io/model_xml.hpp"
 #include "io/obj.hpp"
 #include "lua_args.hpp"
+#include "lua_meshing.hpp"
 #include "lua_query.hpp"
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
@@ -152,6 +153,25 @@ std::string beam_line(const std::vector<ParticleId>& ps, const Section& sec, boo
   return std::string("beam ") + (closed ? "1 " : "0 ") + Trace::section(sec) + ids_line(ps);
 }
 
+// The 6-DOF beam's keys of m:beam: dofs (3 or 6), GJ, EIy, EIz (0 or absent:
+// as EI). Returns dofs.
+int read_beam6_section(lua_State* L, int idx, const char* fn, Section& sec) {
+  const double dofs = field_number(L, idx, "dofs", fn, 3);
+  if (dofs != 3 && dofs != 6) key_error(fn, "dofs", "must be 3 or 6 (DOF per particle)");
+  sec.GJ = field_number(L, idx, "GJ", fn, 0);
+  sec.EIy = field_number(L, idx, "EIy", fn, 0);
+  sec.EIz = field_number(L, idx, "EIz", fn, 0);
+  for (auto [key, v] : {std::pair{"GJ", sec.GJ}, std::pair{"EIy", sec.EIy}, std::pair{"EIz", sec.EIz}})
+    if (!(v >= 0) || !std::isfinite(v)) key_error(fn, key, "must be a finite number >= 0");
+  return int(dofs);
+}
+
+void record_beam6_section(Scene& s, BlockId b, const Section& sec) {
+  if (sec.GJ != 0 || sec.EIy != 0 || sec.EIz != 0)
+    s.record("section6 " + std::to_string(b) + " " + Trace::number(sec.GJ) + " " + Trace::number(sec.EIy) + " " +
+             Trace::number(sec.EIz));
+}
+
 void record_settings(Scene& s) {
   const SolverSettings& st = s.solver.settings;
   s.record(std::string("settings dt=") + Trace::number(st.dt) + " damping=" + damping_name(st.damping) +
@@ -252,8 +272,9 @@ int l_beam(lua_State* L) {
   Scene& s = check_scene(L, fn);
   JournalScope record(s, "beam", describe_args(L, 2, lua_gettop(L)));
   check_table(L, 2, fn);
-  check_keys(L, 2, fn, {"points", "particles", "from", "direction", "segments", "closed", "EA", "EI", "E", "A", "I", "prestress", "line_mass"});
+  check_keys(L, 2, fn, {"points", "particles", "from", "direction", "segments", "closed", "EA", "EI", "E", "A", "I", "prestress", "line_mass", "dofs", "GJ", "EIy", "EIz"});
   Section sec = read_section(L, 2, fn, true);
+  const int dofs = read_beam6_section(L, 2, fn, sec);
   const bool closed = field_bool(L, 2, "closed", fn, false);
   const int ways = has_field(L, 2, "points") + has_field(L, 2, "particles") + has_field(L, 2, "from");
   if (ways != 1) throw LuaArgError("beam: give exactly one of 'points', 'particles' or 'from' (with 'direction' and 'segments')");
@@ -304,6 +325,11 @@ int l_beam(lua_State* L) {
     }
     for (const Vec3& x : pts) s.record("particle " + Trace::vec(x));
     s.record(beam_line(ps, sec, closed));
+  }
+  record_beam6_section(s, b, sec);
+  if (dofs == 6) {
+    s.model.set_beam_formulation(b, 6);
+    s.record("formulation " + std::to_string(b) + " 6");
   }
   push_block(L, s, b);
   record.done();
@@ -686,6 +712,7 @@ int l_count(lua_State* L) {
   set("darts", m.map.dart_count());
   set("bars", m.bars.size());
   set("hinges", m.hinges.size());
+  set("beam6s", m.beam6s.size());
   return 1;
 }
 
@@ -726,6 +753,65 @@ int l_save_obj(lua_State* L) {
   Scene& s = check_scene(L, "save_obj");
   if (lua_type(L, 2) != LUA_TSTRING) arg_error("save_obj", 2, "expected a file name");
   save_obj(s.model, lua_tostring(L, 2));
+  return 0;
+}
+
+// --- rotation: 6-DOF beams ---------------------------------------------------------
+
+// m:formulation(beam) -> 3 or 6; m:formulation(beam, 3 | 6) switches it.
+int l_formulation(lua_State* L) {
+  const char* fn = "formulation";
+  Scene& s = check_scene(L, fn);
+  const BlockId b = check_block(L, 2, s, fn);
+  if (lua_isnoneornil(L, 3)) {
+    lua_pushinteger(L, s.model.beam_formulation(b));
+    return 1;
+  }
+  JournalScope record(s, fn, describe_args(L, 2, lua_gettop(L)));
+  const std::int64_t dofs = check_integer(L, 3, fn);
+  if (dofs != 3 && dofs != 6) arg_error(fn, 3, "must be 3 or 6 (DOF per particle)");
+  s.model.set_beam_formulation(b, int(dofs));
+  s.record("formulation " + std::to_string(b) + " " + std::to_string(dofs));
+  record.done();
+  return 0;
+}
+
+// m:orientation(p) -> x, y, z: the node frame as its three column vectors.
+// m:orientation(p, x, y, z) sets it (an orthonormal right-handed frame).
+int l_orientation(lua_State* L) {
+  const char* fn = "orientation";
+  Scene& s = check_scene(L, fn);
+  const ParticleId p = check_particle(L, 2, s, fn);
+  if (lua_isnoneornil(L, 3)) {
+    const Mat3 R = s.model.particles.orientation[p].toRotationMatrix();
+    for (int k = 0; k < 3; ++k) push_vec3(L, R.col(k));
+    return 3;
+  }
+  Mat3 R;
+  for (int k = 0; k < 3; ++k) R.col(k) = check_vec3(L, 3 + k, fn);
+  if (!((R.transpose() * R - Mat3::Identity()).cwiseAbs().maxCoeff() < 1e-6) || !(R.determinant() > 0))
+    arg_error(fn, 3, "x, y, z must be orthonormal unit vectors forming a right-handed frame");
+  Quat q(R);
+  s.model.set_orientation(p, q);
+  const Quat& set = s.model.particles.orientation[p];
+  s.record("orientation " + std::to_string(p) + " " + Trace::number(set.w()) + " " + Trace::number(set.x()) + " " +
+           Trace::number(set.y()) + " " + Trace::number(set.z()));
+  return 0;
+}
+
+// m:torque(p, {tx, ty, tz}) applies an external moment [N m]; m:torque(p)
+// returns the one applied.
+int l_torque(lua_State* L) {
+  const char* fn = "torque";
+  Scene& s = check_scene(L, fn);
+  const ParticleId p = check_particle(L, 2, s, fn);
+  if (lua_isnoneornil(L, 3)) {
+    push_vec3(L, s.model.particles.moment[p]);
+    return 1;
+  }
+  const Vec3 t = check_vec3(L, 3, fn);
+  s.model.set_moment(p, t);
+  s.record("torque " + std::to_string(p) + " " + Trace::vec(t));
   return 0;
 }
 
@@ -810,8 +896,12 @@ void register_model_meta(lua_State* L) {
   set_fn<l_check>(L, "check");
   set_fn<l_save>(L, "save");
   set_fn<l_save_obj>(L, "save_obj");
+  set_fn<l_formulation>(L, "formulation");
+  set_fn<l_orientation>(L, "orientation");
+  set_fn<l_torque>(L, "torque");
   add_rule_methods(L);
   add_query_methods(L);
+  add_meshing_methods(L);
   lua_setfield(L, -2, "__index");
   lua_pop(L, 1);
   for (const char* meta : {kParticleMeta, kBlockMeta}) {

@@ -83,12 +83,14 @@ CommittedPatch commit_patch(Model& m, const PlannedPatch& plan, const Section& s
     for (const QuadIndices& q : mesh.quads)
       quads.push_back({out.particles[q[0]], out.particles[q[1]], out.particles[q[2]], out.particles[q[3]]});
     out.patch = m.add_patch(quads, s);
+    out.quads = std::move(quads);
   } catch (...) {
     // Reverse order restores the free-slot stack as it was.
     for (auto it = out.created.rbegin(); it != out.created.rend(); ++it) m.delete_particle(*it);
     for (const auto& [p, x] : moved) m.particles.position[p] = x;
     throw;
   }
+  for (const auto& [p, x] : moved) out.moved.push_back(p);
   return out;
 }
 

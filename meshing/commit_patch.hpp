@@ -30,6 +30,11 @@ struct CommittedPatch {
   BlockId patch = kNone;
   std::vector<ParticleId> particles;  // particles[i] is mesh vertex i
   std::vector<ParticleId> created;    // the new particles, in vertex order
+  // What a replayable trace needs to repeat the change primitive by primitive:
+  // the existing particles that were moved (to mesh.positions of their
+  // vertex), and the quads exactly as they were given to Model::add_patch.
+  std::vector<ParticleId> moved;
+  std::vector<Model::Quad> quads;
 };
 
 void validate_section(const Section& s, const std::string& what);

@@ -142,6 +142,52 @@ bool find_quad_grid(const Model& m, BlockId b, QuadGrid& g) {
   return false;
 }
 
+// Any other patch (paving, Catmull-Clark, projection: meshing/) as its quads
+// and edges in file ids, in an order that does not depend on dart numbers:
+// each quad from its smallest id towards its smaller neighbour, quads sorted;
+// edges as (smaller, larger) id, sorted, with their rest lengths.
+struct QuadList {
+  std::vector<std::array<unsigned, 4>> quads;
+  std::vector<std::pair<std::pair<unsigned, unsigned>, double>> edges;
+};
+
+QuadList quad_list(const Model& m, BlockId b, const std::vector<unsigned>& dense) {
+  QuadList out;
+  std::vector<Dart> darts = m.map.orbit(kComponentOrbit, m.blocks[b].dart);
+  std::sort(darts.begin(), darts.end());
+  std::set<Dart> done;
+  std::map<std::pair<unsigned, unsigned>, double> rest;
+  for (Dart d : darts) {
+    const unsigned a = dense[m.dart_particle[d]], c = dense[m.dart_particle[m.map.alpha(0, d)]];
+    rest.emplace(std::make_pair(std::min(a, c), std::max(a, c)), m.rest_length[d]);
+    if (done.count(d)) continue;
+    for (Dart x : m.map.orbit(kFaceOrbit, d)) done.insert(x);
+    std::array<unsigned, 4> q{};
+    Dart x = d;
+    for (int k = 0; k < 4; ++k, x = m.map.alpha(1, m.map.alpha(0, x))) q[k] = dense[m.dart_particle[x]];
+    const int first = int(std::min_element(q.begin(), q.end()) - q.begin());
+    const int step = q[(first + 1) % 4] < q[(first + 3) % 4] ? 1 : 3;
+    std::array<unsigned, 4> canonical{};
+    for (int k = 0; k < 4; ++k) canonical[k] = q[(first + k * step) % 4];
+    out.quads.push_back(canonical);
+  }
+  std::sort(out.quads.begin(), out.quads.end());
+  out.edges.assign(rest.begin(), rest.end());
+  // What add_patch would refuse on loading (merges can make such patches).
+  std::map<std::pair<unsigned, unsigned>, int> uses;
+  bool valid = true;
+  for (const auto& q : out.quads)
+    for (int k = 0; k < 4; ++k) {
+      valid = valid && q[k] != q[(k + 1) % 4] && q[k] != q[(k + 2) % 4];
+      valid = valid && ++uses[{std::min(q[k], q[(k + 1) % 4]), std::max(q[k], q[(k + 1) % 4])}] <= 2;
+    }
+  if (!valid)
+    throw ModelError("save_model_xml: patch " + std::to_string(b) +
+                     " is neither a quad grid of distinct particles nor a set of quads with four distinct corners "
+                     "and edges in at most two quads; the model database holds only those");
+  return out;
+}
+
 // --- writing -----------------------------------------------------------------
 
 class Writer {
@@ -163,6 +209,27 @@ void write_section(Writer& w, const Section& s) {
   w.attr("prestress", s.prestress);
   w.attr("line_mass", s.line_mass);
 }
+
+// A beam's formulation and the section constants only the 6-DOF beam reads.
+void write_beam_section(Writer& w, const Block& blk) {
+  w.attr("dofs", unsigned(blk.dofs));
+  write_section(w, blk.section);
+  w.attr("GJ", blk.section.GJ);
+  w.attr("EIy", blk.section.EIy);
+  w.attr("EIz", blk.section.EIz);
+}
+
+void write_quat(Writer& w, const char* const names[4], const Quat& q) {
+  w.attr(names[0], q.w());
+  w.attr(names[1], q.x());
+  w.attr(names[2], q.y());
+  w.attr(names[3], q.z());
+}
+
+constexpr const char* kFrameNames[4] = {"qw", "qx", "qy", "qz"};
+constexpr const char* kEndANames[4] = {"aw", "ax", "ay", "az"};
+constexpr const char* kEndBNames[4] = {"bw", "bx", "by", "bz"};
+constexpr const char* kQuadNames[4] = {"a", "b", "c", "d"};  // <quad>: corners in order
 
 std::string write_document(const Model& m, const SolverSettings& s) {
   // Dense file ids in the order of live ids.
@@ -212,6 +279,18 @@ std::string write_document(const Model& m, const SolverSettings& s) {
     w.attr("fx", ps.load[p].x());
     w.attr("fy", ps.load[p].y());
     w.attr("fz", ps.load[p].z());
+    // Rotation, when there is any: frame, angular velocity, external moment.
+    if (ps.orientation[p].coeffs() != Quat::Identity().coeffs()) write_quat(w, kFrameNames, ps.orientation[p]);
+    if (!ps.angular_velocity[p].isZero()) {
+      w.attr("wx", ps.angular_velocity[p].x());
+      w.attr("wy", ps.angular_velocity[p].y());
+      w.attr("wz", ps.angular_velocity[p].z());
+    }
+    if (!ps.moment[p].isZero()) {
+      w.attr("mx", ps.moment[p].x());
+      w.attr("my", ps.moment[p].y());
+      w.attr("mz", ps.moment[p].z());
+    }
     w.close();
   }
   w.close();
@@ -236,7 +315,7 @@ std::string write_document(const Model& m, const SolverSettings& s) {
         w.open("beam");
         w.attr("id", id);
         w.attr("closed", unsigned(blk.closed ? 1 : 0));
-        write_section(w, blk.section);
+        write_beam_section(w, blk);
         // Path order from the block's start dart, as particles_of walks it.
         Dart d = blk.dart;
         for (std::size_t guard = 0; guard <= blk.darts; ++guard) {
@@ -245,6 +324,10 @@ std::string write_document(const Model& m, const SolverSettings& s) {
           w.close();
           w.open("segment");
           w.attr("rest", m.rest_length[d]);
+          if (blk.dofs == 6) {  // the beam ends at node k and k+1, in their node frames
+            write_quat(w, kEndANames, m.beam_end[d]);
+            write_quat(w, kEndBNames, m.beam_end[m.map.alpha(0, d)]);
+          }
           w.close();
           Dart e = m.map.alpha(0, d), next = m.map.alpha(1, e);
           if (next == e) {
@@ -261,9 +344,26 @@ std::string write_document(const Model& m, const SolverSettings& s) {
       }
       case BlockKind::Patch: {
         QuadGrid g;
-        if (!find_quad_grid(m, b, g))
-          throw ModelError("save_model_xml: patch " + std::to_string(b) +
-                           " is not a quad grid of distinct particles; the model database holds only those");
+        if (!find_quad_grid(m, b, g)) {
+          const QuadList list = quad_list(m, b, dense);
+          w.open("patch");
+          w.attr("id", id);
+          write_section(w, blk.section);
+          for (const auto& q : list.quads) {
+            w.open("quad");
+            for (int k = 0; k < 4; ++k) w.attr(kQuadNames[k], q[k]);
+            w.close();
+          }
+          for (const auto& [e, rest] : list.edges) {
+            w.open("edge");
+            w.attr("a", e.first);
+            w.attr("b", e.second);
+            w.attr("rest", rest);
+            w.close();
+          }
+          w.close();
+          break;
+        }
         w.open("patch");
         w.attr("id", id);
         w.attr("rows", unsigned(g.rows));
@@ -297,6 +397,8 @@ std::string write_document(const Model& m, const SolverSettings& s) {
 struct ParticleRecord {
   unsigned id = 0;
   Vec3 x = Vec3::Zero(), v = Vec3::Zero(), load = Vec3::Zero();
+  Quat frame = Quat::Identity();
+  Vec3 w = Vec3::Zero(), moment = Vec3::Zero();
   unsigned lock = 0;
   bool passive = false;
   unsigned role = 0;
@@ -307,6 +409,7 @@ struct ParticleRecord {
 struct EdgeRecord {
   unsigned a, b;  // file ids
   double rest;
+  Quat end_a = Quat::Identity(), end_b = Quat::Identity();  // 6-DOF beams
 };
 
 struct BlockRecord {
@@ -314,7 +417,8 @@ struct BlockRecord {
   unsigned id = 0;
   Section section;
   bool closed = false;
-  int rows = 0, cols = 0;
+  unsigned dofs = 3;
+  int rows = 0, cols = 0;  // 0: a patch of <quad>s, nodes holding their corners four by four
   std::vector<unsigned> nodes;  // file ids: cable ends, beam path, grid row-major
   std::vector<EdgeRecord> edges;
   const tinyxml2::XMLElement* element = nullptr;
@@ -326,6 +430,8 @@ struct Document {
   std::vector<ParticleRecord> particles;  // ascending id
   std::vector<BlockRecord> blocks;        // ascending id
 };
+
+class Attributes;
 
 class Reader {
  public:
@@ -360,6 +466,7 @@ class Reader {
   BlockRecord read_cable(const tinyxml2::XMLElement* e) const;
   BlockRecord read_beam(const tinyxml2::XMLElement* e) const;
   BlockRecord read_patch(const tinyxml2::XMLElement* e) const;
+  BlockRecord read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a, BlockRecord& b) const;
   void check_references(const Document& d) const;
   void no_children(const tinyxml2::XMLElement* e) const {
     if (const tinyxml2::XMLElement* c = e->FirstChildElement())
@@ -407,7 +514,8 @@ class Attributes {
     for (const tinyxml2::XMLAttribute* a = e_->FirstAttribute(); a; a = a->Next())
       if (!used_.count(a->Name())) r_.fail(e_, std::string("unknown attribute '") + a->Name() + "'");
   }
-  // Section attributes shared by all blocks; EI is required for beams only.
+  // Section attributes shared by all blocks; EI is required for beams only,
+  // which may also give GJ, EIy and EIz (0 or absent: as EI).
   Section section(bool beam) {
     Section s;
     s.EA = real("EA");
@@ -417,7 +525,22 @@ class Attributes {
     if (!(s.EA > 0)) bad("EA", "must be > 0");
     if (beam ? !(s.EI > 0) : !(s.EI >= 0)) bad("EI", beam ? "must be > 0" : "must be >= 0");
     if (!(s.line_mass >= 0)) bad("line_mass", "must be >= 0");
+    if (beam) {
+      s.GJ = real("GJ", 0.0);
+      s.EIy = real("EIy", 0.0);
+      s.EIz = real("EIz", 0.0);
+      for (auto [name, v] : {std::pair{"GJ", s.GJ}, std::pair{"EIy", s.EIy}, std::pair{"EIz", s.EIz}})
+        if (!(v >= 0)) bad(name, "must be >= 0");
+    }
     return s;
+  }
+  // A unit quaternion from four attributes (all absent: the identity). Taken
+  // as written, so the file round-trips bit for bit.
+  Quat rotation(const char* const names[4]) {
+    Quat q(real(names[0], 1.0), real(names[1], 0.0), real(names[2], 0.0), real(names[3], 0.0));
+    if (std::abs(q.norm() - 1) > 1e-9)
+      bad(names[0], "and its companions must form a unit quaternion (w x y z), norm " + std::to_string(q.norm()));
+    return q;
   }
 
  private:
@@ -493,6 +616,9 @@ ParticleRecord Reader::read_particle(const tinyxml2::XMLElement* e) const {
   if (p.role > unsigned(Role::Volatile)) a.bad("role", "must be 0 (none), 1 (parent), 2 (child) or 3 (volatile)");
   p.point_mass = a.real("point_mass", 0.0);
   if (!(p.point_mass >= 0)) a.bad("point_mass", "must be >= 0");
+  p.frame = a.rotation(kFrameNames);
+  p.w = Vec3(a.real("wx", 0.0), a.real("wy", 0.0), a.real("wz", 0.0));
+  p.moment = Vec3(a.real("mx", 0.0), a.real("my", 0.0), a.real("mz", 0.0));
   a.done();
   no_children(e);
   return p;
@@ -523,9 +649,12 @@ BlockRecord Reader::read_beam(const tinyxml2::XMLElement* e) const {
   b.element = e;
   b.id = a.index("id");
   b.closed = a.flag("closed", false);
+  b.dofs = a.index("dofs", 3);
+  if (b.dofs != 3 && b.dofs != 6) a.bad("dofs", "must be 3 or 6 (DOF per particle)");
   b.section = a.section(true);
   a.done();
   std::vector<double> rests;
+  std::vector<std::pair<Quat, Quat>> ends;
   std::vector<const tinyxml2::XMLElement*> node_elements;
   for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
     Attributes ca(*this, c);
@@ -536,6 +665,7 @@ BlockRecord Reader::read_beam(const tinyxml2::XMLElement* e) const {
       double rest = ca.real("rest");
       if (!(rest > 0)) ca.bad("rest", "must be > 0");
       rests.push_back(rest);
+      if (b.dofs == 6) ends.emplace_back(ca.rotation(kEndANames), ca.rotation(kEndBNames));
     } else {
       fail(c, std::string("unknown element <") + c->Name() + "> inside <beam>");
     }
@@ -554,7 +684,13 @@ BlockRecord Reader::read_beam(const tinyxml2::XMLElement* e) const {
   for (std::size_t k = 0; k < n; ++k)
     if (!seen.insert(b.nodes[k]).second)
       fail(node_elements[k], "attribute 'p': particle " + std::to_string(b.nodes[k]) + " appears twice in the beam");
-  for (std::size_t k = 0; k < segments; ++k) b.edges.push_back({b.nodes[k], b.nodes[(k + 1) % n], rests[k]});
+  for (std::size_t k = 0; k < segments; ++k) {
+    b.edges.push_back({b.nodes[k], b.nodes[(k + 1) % n], rests[k]});
+    if (b.dofs == 6) {
+      b.edges.back().end_a = ends[k].first;
+      b.edges.back().end_b = ends[k].second;
+    }
+  }
   return b;
 }
 
@@ -564,6 +700,7 @@ BlockRecord Reader::read_patch(const tinyxml2::XMLElement* e) const {
   b.kind = BlockKind::Patch;
   b.element = e;
   b.id = a.index("id");
+  if (!e->Attribute("rows") && !e->Attribute("cols")) return read_quad_patch(e, a, b);
   unsigned rows = a.index("rows"), cols = a.index("cols");
   if (rows < 2 || rows > 1u << 15) a.bad("rows", "must be an integer from 2 to 32768");
   if (cols < 2 || cols > 1u << 15) a.bad("cols", "must be an integer from 2 to 32768");
@@ -617,6 +754,54 @@ BlockRecord Reader::read_patch(const tinyxml2::XMLElement* e) const {
   return b;
 }
 
+// <patch id EA ...> <quad a b c d/> ... <edge a b rest/> ... </patch>: every
+// quad edge exactly once.
+BlockRecord Reader::read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a, BlockRecord& b) const {
+  b.section = a.section(false);
+  a.done();
+  std::vector<const tinyxml2::XMLElement*> edge_elements;
+  std::map<std::pair<unsigned, unsigned>, int> expected;  // -> index of its <edge>, -1 until seen
+  auto key = [](unsigned x, unsigned y) { return std::make_pair(std::min(x, y), std::max(x, y)); };
+  for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    Attributes ca(*this, c);
+    if (std::strcmp(c->Name(), "quad") == 0) {
+      std::array<unsigned, 4> q{};
+      for (int k = 0; k < 4; ++k) q[k] = ca.index(kQuadNames[k]);
+      for (int k = 0; k < 4; ++k) {
+        for (int j = k + 1; j < 4; ++j)
+          if (q[k] == q[j]) ca.bad(kQuadNames[j], "repeats particle " + std::to_string(q[j]) + " in the quad");
+        expected.emplace(key(q[k], q[(k + 1) % 4]), -1);
+        b.nodes.push_back(q[k]);
+      }
+    } else if (std::strcmp(c->Name(), "edge") == 0) {
+      EdgeRecord r{ca.index("a"), ca.index("b"), ca.real("rest")};
+      if (!(r.rest > 0)) ca.bad("rest", "must be > 0");
+      b.edges.push_back(r);
+      edge_elements.push_back(c);
+    } else {
+      fail(c, std::string("unknown element <") + c->Name() + "> inside <patch>");
+    }
+    ca.done();
+    no_children(c);
+  }
+  if (b.nodes.empty()) fail(e, "a patch needs attributes 'rows' and 'cols' with <node>s, or <quad a b c d> children");
+  for (std::size_t k = 0; k < b.edges.size(); ++k) {
+    auto it = expected.find(key(b.edges[k].a, b.edges[k].b));
+    if (it == expected.end())
+      fail(edge_elements[k], "attributes 'a' and 'b': particles " + std::to_string(b.edges[k].a) + " and " +
+                                 std::to_string(b.edges[k].b) + " are not neighbours in a quad");
+    if (it->second >= 0)
+      fail(edge_elements[k], "attributes 'a' and 'b': this edge is already given on line " +
+                                 std::to_string(edge_elements[it->second]->GetLineNum()));
+    it->second = int(k);
+  }
+  for (const auto& [pair, k] : expected)
+    if (k < 0)
+      fail(e, "no <edge a b rest> between particles " + std::to_string(pair.first) + " and " +
+                  std::to_string(pair.second));
+  return b;
+}
+
 void Reader::check_references(const Document& d) const {
   std::map<unsigned, const ParticleRecord*> by_id;
   for (const ParticleRecord& p : d.particles) by_id[p.id] = &p;
@@ -629,6 +814,8 @@ void Reader::check_references(const Document& d) const {
     } else {
       for (const tinyxml2::XMLElement* c = e->FirstChildElement("node"); c; c = c->NextSiblingElement("node"))
         refs.push_back({c, "p"});
+      for (const tinyxml2::XMLElement* c = e->FirstChildElement("quad"); c; c = c->NextSiblingElement("quad"))
+        for (const char* corner : kQuadNames) refs.push_back({c, corner});
     }
     for (std::size_t k = 0; k < refs.size(); ++k)
       if (!by_id.count(b.nodes[k]))
@@ -721,6 +908,9 @@ void build(const Reader& reader, const Document& d, Model& m) {
       m.set_passive(p, r.passive);
       m.set_role(p, Role(r.role));
       m.set_point_mass(p, r.point_mass);
+      m.particles.orientation[p] = r.frame;
+      m.particles.angular_velocity[p] = r.w;
+      m.set_moment(p, r.moment);
       id_of[r.id] = p;
     } catch (const ModelError& e) {
       reader.fail(r.element, e.what());
@@ -734,7 +924,15 @@ void build(const Reader& reader, const Document& d, Model& m) {
       switch (r.kind) {
         case BlockKind::Cable: b = m.add_cable(ps[0], ps[1], r.section, r.edges[0].rest); break;
         case BlockKind::Beam: b = m.add_beam(ps, r.section, r.closed); break;
-        case BlockKind::Patch: b = m.add_quad_grid(ps, r.rows, r.cols, r.section); break;
+        case BlockKind::Patch:
+          if (r.rows == 0) {
+            std::vector<Model::Quad> quads;
+            for (std::size_t k = 0; k < ps.size(); k += 4) quads.push_back({ps[k], ps[k + 1], ps[k + 2], ps[k + 3]});
+            b = m.add_patch(quads, r.section);
+          } else {
+            b = m.add_quad_grid(ps, r.rows, r.cols, r.section);
+          }
+          break;
       }
       // Blocks take rest lengths from the current distances; the stored
       // ones win. Bars and lumped masses follow in rebuild_elements below.
@@ -746,6 +944,17 @@ void build(const Reader& reader, const Document& d, Model& m) {
       for (Dart x : m.map.orbit(kComponentOrbit, m.blocks[b].dart)) {
         ParticleId a = m.dart_particle[x], c = m.dart_particle[m.map.alpha(0, x)];
         m.rest_length[x] = rest.at({std::min(a, c), std::max(a, c)});
+      }
+      if (r.kind == BlockKind::Beam && r.dofs == 6) {
+        // The stored beam ends, segment by segment along the path; the
+        // Beam6 elements follow in rebuild_elements below.
+        m.blocks[b].dofs = 6;
+        Dart d = m.blocks[b].dart;
+        for (const EdgeRecord& e : r.edges) {
+          m.beam_end[d] = e.end_a;
+          m.beam_end[m.map.alpha(0, d)] = e.end_b;
+          d = m.map.alpha(1, m.map.alpha(0, d));
+        }
       }
     } catch (const ModelError& e) {
       reader.fail(r.element, e.what());

@@ -6,24 +6,31 @@
 //     <solver dt damping viscous geometric_factor mass_factor integrator mass_mode/>
 //     <gravity x y z/>
 //     <particles>
-//       <particle id x y z vx vy vz lock passive point_mass fx fy fz/>
-//     </particles>
+//       <particle id x y z vx vy vz lock passive point_mass fx fy fz
+//                 [qw qx qy qz] [wx wy wz] [mx my mz]/>  (frame, angular velocity,
+//     </particles>                                     external moment; when set)
 //     <blocks>
 //       <cable id a b EA EI prestress line_mass rest_length/>
-//       <beam id closed EA EI prestress line_mass>
+//       <beam id closed dofs EA EI prestress line_mass GJ EIy EIz>
 //         <node p/> <segment rest/> <node p/> ...   (nodes in path order;
 //       </beam>                                      segment k joins node k, k+1)
+//         6-DOF beams: <segment rest aw ax ay az bw bx by bz/>, the beam ends
+//         at node k and k+1 relative to their node frames (unit quaternions)
 //       <patch id rows cols EA EI prestress line_mass>
 //         <node p/> ... rows*cols, row-major      (a quad grid, see add_quad_grid)
 //         <edge a b rest/> ... every grid edge once
+//       </patch>
+//       <patch id EA EI prestress line_mass>      (any other patch: paving,
+//         <quad a b c d/> ...                       Catmull-Clark, projection)
+//         <edge a b rest/> ... every quad edge once
 //       </patch>
 //     </blocks>
 //   </tendril>
 //
 // Saving numbers particles and blocks densely (0..n-1) in the order of their
 // live ids and writes every double with 17 significant digits, so save, load,
-// save gives the same bytes. Derived data (bars, hinges, lumped masses,
-// forces) is not stored; loading recomputes it.
+// save gives the same bytes. Derived data (bars, hinges, 6-DOF beam elements,
+// lumped masses, forces, torques) is not stored; loading recomputes it.
 #include <string>
 
 #include "model/model.hpp"
@@ -37,8 +44,7 @@ struct ModelFormatError : ModelError {
   using ModelError::ModelError;
 };
 
-// Throws ModelError when the file cannot be written, or when a patch is no
-// longer a quad grid of distinct particles (the only patches the format holds).
+// Throws ModelError when the file cannot be written.
 void save_model_xml(const Model& m, const SolverSettings& s, const std::string& path);
 std::string model_xml_string(const Model& m, const SolverSettings& s);
 

@@ -129,6 +129,25 @@ void replay_trace(std::istream& in, const std::string& name, Model& m, Solver& s
         BlockId b = r.id();
         ParticleId end = r.id();
         m.extend_beam(b, end, r.id());
+      } else if (op == "section6") {  // a beam's 6-DOF stiffnesses, set while it is still 3 DOF
+        BlockId b = r.id();
+        m.require_block(b, "section6");
+        if (m.blocks[b].dofs != 3) throw ModelError(r.where + ": section6 on a beam that is already 6 DOF");
+        Section sec = m.blocks[b].section;
+        sec.GJ = r.number();
+        sec.EIy = r.number();
+        sec.EIz = r.number();
+        m.blocks[b].section = sec;
+      } else if (op == "formulation") {
+        BlockId b = r.id();
+        m.set_beam_formulation(b, int(r.number()));
+      } else if (op == "orientation") {
+        ParticleId p = r.id();
+        const double w = r.number(), x = r.number(), y = r.number(), z = r.number();
+        m.set_orientation(p, Quat(w, x, y, z));
+      } else if (op == "torque") {
+        ParticleId p = r.id();
+        m.set_moment(p, r.vec());
       } else if (op == "delete_particle") m.delete_particle(r.id());
       else if (op == "merge") m.merge(r.rest());
       else if (op == "explode") m.explode(r.id());

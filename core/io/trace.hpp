@@ -10,7 +10,8 @@
 //   delete_particle P  merge P...  explode P  explode_from P B  delete B  extend B END P
 //   insert A B  remove_from_beam P  lock P BITS  passive P 0|1  role P R  load P X Y Z
 //   mass P KG  position P X Y Z  gravity X Y Z  settings KEY=VALUE ...
-//   steps N   open PATH (a model database)   # comment
+//   section6 B GJ EIy EIz   formulation B 3|6   orientation P W X Y Z
+//   torque P X Y Z   steps N   open PATH (a model database)   # comment
 #include <iosfwd>
 #include <string>
 #include <vector>

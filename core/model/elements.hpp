@@ -28,6 +28,22 @@ struct Hinge {
   std::uint32_t dart;  // a dart of the vertex j inside the beam
 };
 
+// Li's co-rotational Euler-Bernoulli beam with 6 DOF per particle on an edge
+// of a 6-DOF beam block (eq. 3.44-3.50): it carries the axial force of the
+// edge too (no Bar, no Hinge there). end_i and end_j are the beam-end
+// orientations relative to the node frames of i and j (appendix A); they
+// co-rotate with the nodes. The element is stress free when both beam ends
+// align with its chord and its length is the rest length.
+struct Beam6 {
+  ParticleId i, j;
+  Quat end_i = Quat::Identity(), end_j = Quat::Identity();
+  double rest_length;
+  double EA, EIy, EIz, GJ;
+  double prestress;
+  double line_mass;    // kg/m
+  std::uint32_t dart;  // a dart of the edge, embedding i
+};
+
 template <class E>
 struct ElementBuffer {
   LoggedVector<E> items;

@@ -1,5 +1,6 @@
 // Rule 9: a spline beam that grows particle by particle (thesis fig. 4.26),
 // the way an agent's children become a beam.
+#include "model/frames.hpp"
 #include "model/model.hpp"
 
 namespace tendril {
@@ -25,8 +26,24 @@ void Model::extend_beam(BlockId b, ParticleId end, ParticleId p) {
   map.link(0, d, e);
   map.link(1, tip, d);
   set_edge_rest_length(d, length);
-  add_bar(d);
-  add_hinge(tip);
+  if (blk.dofs == 6) {
+    // A straight joint at `end`: the new beam end is the old one turned to
+    // look along the new edge; p's is that orientation carried along to the
+    // new chord (turned to look back).
+    beam_end[d] = Quat(beam_end[tip] * end_flip());
+    const Quat joint = particles.orientation[end] * beam_end[d];
+    const Vec3 chord = (particles.position[p] - particles.position[end]) / length;
+    const Quat far = Quat(Quat::FromTwoVectors(joint * Vec3::UnitX(), chord) * joint).normalized();
+    if (particles.rot_degree[p] == 0 && !(particles.lock[p] & kLockRotation)) {
+      particles.orientation[p] = far;
+      particles.angular_velocity[p].setZero();
+      beam_end[e] = end_flip();
+    } else {
+      beam_end[e] = Quat(particles.orientation[p].conjugate() * far * end_flip()).normalized();
+    }
+  }
+  add_edge_element(d);
+  add_vertex_element(tip);
   if (blocks[b].dart == tip) blocks[b].dart = e;  // grown at its start: the path now starts at p
 }
 

@@ -2,7 +2,10 @@
 // themselves live in operations.cpp; the invariant check in model_check.cpp.
 #include "model/model.hpp"
 
+#include "model/frames.hpp"
+
 #include <algorithm>
+#include <cmath>
 
 namespace tendril {
 
@@ -13,13 +16,16 @@ Model::Model()
       dart_hinge(map.add_column<ElementIndex>(kNone)),
       ring_next(map.add_column<Dart>(kNoDart)),
       ring_prev(map.add_column<Dart>(kNoDart)),
-      rest_length(map.add_column<double>(0.0)) {
+      rest_length(map.add_column<double>(0.0)),
+      dart_beam6(map.add_column<ElementIndex>(kNone)),
+      beam_end(map.add_column<Quat>(Quat::Identity())) {
   UndoLog* log = &map.undo_log();
   particles.attach(log);
   blocks.attach(log);
   free_blocks_.attach(log);
   bars.items.attach(log);
   hinges.items.attach(log);
+  beam6s.items.attach(log);
 }
 
 void Model::require_particle(ParticleId p, const char* what) const {
@@ -59,6 +65,7 @@ BlockId Model::new_block(BlockKind k, const Section& s, bool closed) {
   Block& blk = blocks[b];
   blk.kind = k;
   blk.closed = closed;
+  blk.dofs = 3;
   blk.section = s;
   blk.dart = kNoDart;
   blk.darts = 0;
@@ -252,8 +259,113 @@ void Model::refresh_vertex(Dart d) {
     unbind_bar(e);
     bind_bar(e);
   }
+  e = dart_beam6[d];
+  if (e != kNone) {
+    unbind_beam6(e);
+    bind_beam6(e);
+  }
   refresh_hinge(d);
   refresh_hinge(map.alpha(0, d));
+}
+
+// --- 6-DOF beam elements -------------------------------------------------------
+
+void Model::add_beam6(Dart d) {
+  const Section& s = blocks[dart_block[d]].section;
+  ElementIndex e = static_cast<ElementIndex>(beam6s.size());
+  Beam6 b{};
+  b.rest_length = rest_length[d];
+  b.EA = s.EA;
+  b.EIy = s.bending_y();
+  b.EIz = s.bending_z();
+  b.GJ = s.torsion();
+  b.prestress = s.prestress;
+  b.line_mass = s.line_mass;
+  b.dart = d;
+  beam6s.items.push_back(b);
+  map.for_orbit(kEdgeOrbit, d, [&](Dart x) {
+    dart_beam6[x] = e;
+    return true;
+  });
+  bind_beam6(e);
+}
+
+void Model::bind_beam6(ElementIndex e) {
+  Beam6& b = beam6s[e];
+  const Dart other = map.alpha(0, b.dart);
+  b.i = dart_particle[b.dart];
+  b.j = dart_particle[other];
+  b.end_i = beam_end[b.dart];
+  b.end_j = Quat(beam_end[other] * end_flip());  // turned to look from i to j
+  const double half = 0.5 * b.line_mass * b.rest_length;
+  particles.lumped_mass[b.i] += half;
+  particles.lumped_mass[b.j] += half;
+  particles.add_rotational_end(b.i);
+  particles.add_rotational_end(b.j);
+}
+
+void Model::unbind_beam6(ElementIndex e) {
+  const Beam6& b = beam6s[e];
+  const double half = 0.5 * b.line_mass * b.rest_length;
+  particles.lumped_mass[b.i] -= half;
+  particles.lumped_mass[b.j] -= half;
+  particles.remove_rotational_end(b.i);
+  particles.remove_rotational_end(b.j);
+}
+
+void Model::remove_beam6(Dart d) {
+  ElementIndex e = dart_beam6[d];
+  if (e == kNone) return;
+  unbind_beam6(e);
+  map.for_orbit(kEdgeOrbit, beam6s[e].dart, [&](Dart x) {
+    dart_beam6[x] = kNone;
+    return true;
+  });
+  ElementIndex last = static_cast<ElementIndex>(beam6s.size() - 1);
+  if (e != last) {
+    beam6s[e] = beam6s[last];
+    map.for_orbit(kEdgeOrbit, beam6s[e].dart, [&](Dart x) {
+      dart_beam6[x] = e;
+      return true;
+    });
+  }
+  beam6s.items.pop_back();
+}
+
+void Model::refresh_beam6(Dart d) {
+  ElementIndex e = dart_beam6[d];
+  if (e == kNone) return;
+  unbind_beam6(e);
+  beam6s[e].rest_length = rest_length[beam6s[e].dart];
+  bind_beam6(e);
+}
+
+bool Model::six_dof(Dart d) const {
+  const Block& b = blocks[dart_block[d]];
+  return b.kind == BlockKind::Beam && b.dofs == 6;
+}
+
+void Model::add_edge_element(Dart d) {
+  if (six_dof(d)) add_beam6(d);
+  else add_bar(d);
+}
+
+void Model::remove_edge_element(Dart d) {
+  remove_bar(d);
+  remove_beam6(d);
+}
+
+void Model::add_vertex_element(Dart d) {
+  if (blocks[dart_block[d]].kind == BlockKind::Beam && !six_dof(d) && !map.is_free(1, d)) add_hinge(d);
+}
+
+void Model::rehome_dart(Dart d, ParticleId q) {
+  const ParticleId p = dart_particle[d];
+  if (dart_beam6[d] != kNone && p != q)  // the beam end stays put in global terms
+    beam_end[d] = Quat(particles.orientation[q].conjugate() * particles.orientation[p] * beam_end[d]).normalized();
+  unembed(d);
+  embed(d, q);
+  refresh_vertex(d);
 }
 
 // --- full rebuild ------------------------------------------------------------
@@ -261,17 +373,19 @@ void Model::refresh_vertex(Dart d) {
 void Model::rebuild_elements() {
   bars.items.clear();
   hinges.items.clear();
+  beam6s.items.clear();
   for (ParticleId p = 0; p < particles.capacity(); ++p) particles.lumped_mass[p] = 0.0;
+  particles.clear_rotational();
   const std::size_t n = map.capacity();
   for (Dart d = 0; d < n; ++d) {
     dart_bar[d] = kNone;
     dart_hinge[d] = kNone;
+    dart_beam6[d] = kNone;
   }
   for (Dart d = 0; d < n; ++d) {
     if (!map.alive(d)) continue;
-    if (dart_bar[d] == kNone && !map.is_free(0, d)) add_bar(d);
-    if (blocks[dart_block[d]].kind == BlockKind::Beam && dart_hinge[d] == kNone && !map.is_free(1, d))
-      add_hinge(d);
+    if (dart_bar[d] == kNone && dart_beam6[d] == kNone && !map.is_free(0, d)) add_edge_element(d);
+    if (dart_hinge[d] == kNone) add_vertex_element(d);
   }
 }
 
@@ -280,6 +394,20 @@ void Model::rebuild_elements() {
 void Model::set_lock(ParticleId p, std::uint8_t bits) {
   require_particle(p, "lock");
   particles.lock[p] = bits;
+}
+
+void Model::set_orientation(ParticleId p, const Quat& q) {
+  require_particle(p, "orientation");
+  const double n = q.norm();
+  if (!(n > 0) || !std::isfinite(n) || !q.coeffs().allFinite())
+    throw ModelError("orientation: particle " + std::to_string(p) + ": not a rotation");
+  particles.orientation[p] = Quat(q.coeffs() / n);
+}
+
+void Model::set_moment(ParticleId p, const Vec3& m) {
+  require_particle(p, "torque");
+  if (!m.allFinite()) throw ModelError("torque: the moment is not finite");
+  particles.moment[p] = m;
 }
 
 void Model::set_passive(ParticleId p, bool passive) {

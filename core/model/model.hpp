@@ -18,6 +18,9 @@ namespace tendril {
 struct Block {
   BlockKind kind = BlockKind::Cable;
   bool closed = false;  // a beam ring
+  // Beams: 3 (spline beam, bars and hinges, eq. 3.41-3.43) or 6 DOF per
+  // particle (Beam6 elements, eq. 3.44-3.50). Other blocks: 3.
+  std::uint8_t dofs = 3;
   Section section;
   Dart dart = kNoDart;  // any dart of the component
   std::size_t darts = 0;
@@ -65,6 +68,23 @@ class Model {
   void remove_from_beam(ParticleId p);                     // rule 11
   void delete_beam(BlockId b);                              // rule 18
 
+  // --- beam formulations (thesis 5.5.2.1), formulations.cpp ----------------
+  // Switches a beam between 3 and 6 DOF per particle between steps, at a cost
+  // proportional to the beam. 3 -> 6: node frames from the current polyline
+  // by parallel transport, beam ends of every joint averaged (appendix A.2:
+  // the pre-stress of an initially straight joint, so the beam keeps the
+  // straight rest shape of its 3-DOF hinges); the twist reference is the
+  // frame of the first rotation-locked particle on the beam (else appendix
+  // A.1's global z), and every rotation-locked particle imposes its own
+  // frame's twist on its beam end. Particles already on another 6-DOF beam
+  // keep their frames. 6 -> 3: bars and hinges again; rotations drop.
+  void set_beam_formulation(BlockId b, int dofs);
+  int beam_formulation(BlockId b) const;
+  // 6-DOF beams: the current shape becomes the rest shape (appendix A.1,
+  // fig. A.1b, no pre-stress): every beam end along its element's chord,
+  // rest lengths the current lengths. For analysing initially curved beams.
+  void release_beam_prestress(BlockId b);
+
   // --- patches: a quad grid built by hand until meshing lands -------------
   // grid[r * cols + c] are existing particles; quads are sewn by alpha2 and
   // every edge carries a bar with the given section.
@@ -81,6 +101,10 @@ class Model {
   void set_load(ParticleId p, const Vec3& f);
   void set_point_mass(ParticleId p, double kg);
   void set_role(ParticleId p, Role r);
+  // The node frame of p; on a 6-DOF beam its beam ends turn with it. Must be
+  // a rotation (normalised here).
+  void set_orientation(ParticleId p, const Quat& q);
+  void set_moment(ParticleId p, const Vec3& m);  // external torque [N m]
   Vec3 gravity = Vec3::Zero();
 
   // --- queries -----------------------------------------------------------
@@ -123,6 +147,7 @@ class Model {
   LoggedVector<Block> blocks;
   ElementBuffer<Bar> bars;
   ElementBuffer<Hinge> hinges;
+  ElementBuffer<Beam6> beam6s;
 
   // Per-dart columns: 0-embedding, owning block, element references, and the
   // ring of darts embedding the same particle.
@@ -133,6 +158,11 @@ class Model {
   DartColumn<Dart>& ring_next;
   DartColumn<Dart>& ring_prev;
   DartColumn<double>& rest_length;  // per edge: the bar's rest length [m]
+  DartColumn<ElementIndex>& dart_beam6;
+  // Per dart of a 6-DOF beam edge: the beam end at the dart's particle,
+  // relative to that particle's frame, its x axis looking along the edge away
+  // from the particle (see end_flip). Kept (unused) while the beam is 3 DOF.
+  DartColumn<Quat>& beam_end;
 
   void require_particle(ParticleId p, const char* what) const;
   void require_block(BlockId b, const char* what) const;
@@ -156,7 +186,24 @@ class Model {
   void remove_hinge(Dart d);
   void refresh_hinge(Dart d);  // re-reads i, j, k of the hinge at vertex d, if any
   void refresh_vertex(Dart d);  // after re-embedding d: its bar and nearby hinges
+  void add_beam6(Dart d);
+  void remove_beam6(Dart d);
+  void bind_beam6(ElementIndex e);
+  void unbind_beam6(ElementIndex e);
+  void refresh_beam6(Dart d);  // re-reads rest length and beam ends of the edge of d
+  // The element of an edge and of a beam vertex as the block's formulation
+  // asks: a bar or a Beam6; a hinge on 3-DOF beams only.
+  bool six_dof(Dart d) const;
+  void add_edge_element(Dart d);
+  void remove_edge_element(Dart d);
+  void add_vertex_element(Dart d);
+  void init_beam_frames(BlockId b);          // formulations.cpp
+  std::vector<Dart> path_darts(BlockId b) const;  // per segment, its dart at the start node
+  // Moves dart d from its particle to q, keeping its beam end where it was.
+  void rehome_dart(Dart d, ParticleId q);
   std::string check_dart(Dart d) const;
+  std::string check_beam6(Dart d) const;
+  std::string check_rotation(ParticleId p) const;
   Dart find_edge(ParticleId a, ParticleId b, BlockKind k) const;
   std::vector<Dart> darts_of(ParticleId p) const;
   void delete_component(BlockId b);

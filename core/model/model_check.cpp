@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "model/frames.hpp"
 #include "model/model.hpp"
 
 namespace tendril {
@@ -22,20 +23,28 @@ std::string Model::check_dart(Dart d) const {
   Dart other = map.alpha(0, d);
   if (dart_particle[other] == p) return "dart " + std::to_string(d) + ": edge from particle " + std::to_string(p) + " to itself";
   if (!near(rest_length[d], rest_length[other])) return "dart " + std::to_string(d) + ": rest length differs across its edge";
-  // Elements: one bar per edge, one hinge per interior beam vertex.
-  ElementIndex e = dart_bar[d];
-  if (e == kNone || e >= bars.size()) return "dart " + std::to_string(d) + " has no bar";
-  const Bar& bar = bars[e];
-  if (dart_bar[bar.dart] != e || (bar.dart != d && bar.dart != other && map.alpha(2, bar.dart) != d &&
-                                  map.alpha(2, bar.dart) != other))
-    return "bar " + std::to_string(e) + " does not point back to its edge";
-  ParticleId bi = dart_particle[bar.dart], bj = dart_particle[map.alpha(0, bar.dart)];
-  if (bar.i != bi || bar.j != bj) return "bar " + std::to_string(e) + " has stale particles";
+  // Elements: one bar per edge (a Beam6 on 6-DOF beams), one hinge per
+  // interior vertex of a 3-DOF beam.
   const Block& blk = blocks[b];
-  if (!near(bar.rest_length, rest_length[d]) || bar.EA != blk.section.EA || bar.prestress != blk.section.prestress ||
-      bar.line_mass != blk.section.line_mass || bar.tension_only != (blk.kind == BlockKind::Cable))
-    return "bar " + std::to_string(e) + " parameters differ from its block and edge";
-  const bool interior = blk.kind == BlockKind::Beam && !map.is_free(1, d);
+  const bool six = blk.kind == BlockKind::Beam && blk.dofs == 6;
+  if (six) {
+    if (dart_bar[d] != kNone) return "dart " + std::to_string(d) + " of a 6-DOF beam has a bar";
+    if (std::string m = check_beam6(d); !m.empty()) return m;
+  } else {
+    if (dart_beam6[d] != kNone) return "dart " + std::to_string(d) + " of a 3-DOF block has a 6-DOF beam element";
+    ElementIndex e = dart_bar[d];
+    if (e == kNone || e >= bars.size()) return "dart " + std::to_string(d) + " has no bar";
+    const Bar& bar = bars[e];
+    if (dart_bar[bar.dart] != e || (bar.dart != d && bar.dart != other && map.alpha(2, bar.dart) != d &&
+                                    map.alpha(2, bar.dart) != other))
+      return "bar " + std::to_string(e) + " does not point back to its edge";
+    ParticleId bi = dart_particle[bar.dart], bj = dart_particle[map.alpha(0, bar.dart)];
+    if (bar.i != bi || bar.j != bj) return "bar " + std::to_string(e) + " has stale particles";
+    if (!near(bar.rest_length, rest_length[d]) || bar.EA != blk.section.EA || bar.prestress != blk.section.prestress ||
+        bar.line_mass != blk.section.line_mass || bar.tension_only != (blk.kind == BlockKind::Cable))
+      return "bar " + std::to_string(e) + " parameters differ from its block and edge";
+  }
+  const bool interior = blk.kind == BlockKind::Beam && !six && !map.is_free(1, d);
   ElementIndex h = dart_hinge[d];
   if (interior != (h != kNone)) return "dart " + std::to_string(d) + (interior ? " lacks its hinge" : " has a stray hinge");
   if (interior) {
@@ -50,6 +59,40 @@ std::string Model::check_dart(Dart d) const {
   return {};
 }
 
+std::string Model::check_beam6(Dart d) const {
+  const ElementIndex e = dart_beam6[d];
+  if (e == kNone || e >= beam6s.size()) return "dart " + std::to_string(d) + " of a 6-DOF beam has no Beam6";
+  const Beam6& el = beam6s[e];
+  const Dart other = map.alpha(0, d);
+  const std::string name = "6-DOF beam element " + std::to_string(e);
+  if (dart_beam6[el.dart] != e || (el.dart != d && el.dart != other)) return name + " does not point back to its edge";
+  const Dart far = map.alpha(0, el.dart);
+  if (el.i != dart_particle[el.dart] || el.j != dart_particle[far]) return name + " has stale particles";
+  if (!(el.end_i.coeffs() == beam_end[el.dart].coeffs()) ||
+      !(el.end_j.coeffs() == Quat(beam_end[far] * end_flip()).coeffs()))
+    return name + " has stale beam ends";
+  if (!el.end_i.coeffs().allFinite() || !el.end_j.coeffs().allFinite() || std::abs(el.end_i.norm() - 1) > 1e-9 ||
+      std::abs(el.end_j.norm() - 1) > 1e-9)
+    return name + ": a beam end is not a rotation";
+  const Section& s = blocks[dart_block[d]].section;
+  if (!near(el.rest_length, rest_length[d]) || el.EA != s.EA || el.EIy != s.bending_y() || el.EIz != s.bending_z() ||
+      el.GJ != s.torsion() || el.prestress != s.prestress || el.line_mass != s.line_mass)
+    return name + " parameters differ from its block and edge";
+  return {};
+}
+
+std::string Model::check_rotation(ParticleId p) const {
+  const Particles& P = particles;
+  if (!P.orientation[p].coeffs().allFinite() || std::abs(P.orientation[p].norm() - 1) > 1e-9)
+    return "particle " + std::to_string(p) + ": its frame is not a rotation";
+  if (!P.angular_velocity[p].allFinite()) return "particle " + std::to_string(p) + ": angular velocity is not finite";
+  const std::uint32_t slot = P.rotational_slot[p];
+  if ((P.rot_degree[p] > 0) != (slot != kNone) ||
+      (slot != kNone && (slot >= P.rotational.size() || P.rotational[slot] != p)))
+    return "particle " + std::to_string(p) + " is misfiled in the list of rotating particles";
+  return {};
+}
+
 std::string Model::check_near(const std::vector<ParticleId>& ps) const {
   for (ParticleId p : ps) {
     if (!particles.valid(p)) continue;
@@ -57,7 +100,8 @@ std::string Model::check_near(const std::vector<ParticleId>& ps) const {
       return "particle " + std::to_string(p) + " is not finite";
     if (particles.active[p] != (particles.degree[p] > 0 && !particles.passive[p]))
       return "particle " + std::to_string(p) + " has a stale active flag";
-    std::uint32_t degree = 0;
+    if (std::string m = check_rotation(p); !m.empty()) return m;
+    std::uint32_t degree = 0, rot_degree = 0;
     for (Dart d : darts_of(p)) {
       ++degree;
       if (!map.alive(d) || dart_particle[d] != p) return "particle " + std::to_string(p) + " has a stale dart ring";
@@ -68,8 +112,10 @@ std::string Model::check_near(const std::vector<ParticleId>& ps) const {
       }
       if (std::string m = check_dart(d); !m.empty()) return m;
       if (std::string m = check_dart(map.alpha(0, d)); !m.empty()) return m;
+      rot_degree += dart_beam6[d] != kNone;
     }
     if (degree != particles.degree[p]) return "particle " + std::to_string(p) + " miscounts its darts";
+    if (rot_degree != particles.rot_degree[p]) return "particle " + std::to_string(p) + " miscounts its 6-DOF beam ends";
   }
   return {};
 }
@@ -99,6 +145,16 @@ std::string Model::check() const {
     lumped[bar.i] += half;
     lumped[bar.j] += half;
   }
+  std::vector<std::uint32_t> rot_degree(particles.capacity(), 0);
+  for (std::size_t e = 0; e < beam6s.size(); ++e) {
+    const Beam6& el = beam6s[e];
+    if (!map.alive(el.dart) || dart_beam6[el.dart] != e) return "6-DOF beam element " + std::to_string(e) + " is orphaned";
+    double half = 0.5 * el.line_mass * el.rest_length;
+    lumped[el.i] += half;
+    lumped[el.j] += half;
+    ++rot_degree[el.i];
+    ++rot_degree[el.j];
+  }
   for (std::size_t h = 0; h < hinges.size(); ++h)
     if (!map.alive(hinges[h].dart) || dart_hinge[hinges[h].dart] != h) return "hinge " + std::to_string(h) + " is orphaned";
   for (BlockId b = 0; b < blocks.size(); ++b) {
@@ -110,7 +166,10 @@ std::string Model::check() const {
     if (blk.kind != BlockKind::Patch) {
       if (blk.closed == map.is_free(1, blk.dart)) return "beam " + std::to_string(b) + ": start dart does not match open/closed";
     }
+    if (blk.dofs != 3 && !(blk.dofs == 6 && blk.kind == BlockKind::Beam))
+      return "block " + std::to_string(b) + " has " + std::to_string(int(blk.dofs)) + " DOF per particle";
   }
+  std::size_t rotating = 0;
   for (ParticleId p = 0; p < particles.capacity(); ++p) {
     if (!particles.alive[p]) continue;
     if (degree[p] != particles.degree[p]) return "particle " + std::to_string(p) + " miscounts its darts";
@@ -119,7 +178,11 @@ std::string Model::check() const {
       return "particle " + std::to_string(p) + " has a stale active flag";
     if (!particles.position[p].allFinite() || !particles.velocity[p].allFinite())
       return "particle " + std::to_string(p) + " is not finite";
+    if (rot_degree[p] != particles.rot_degree[p]) return "particle " + std::to_string(p) + " miscounts its 6-DOF beam ends";
+    if (std::string m = check_rotation(p); !m.empty()) return m;
+    rotating += rot_degree[p] > 0;
   }
+  if (rotating != particles.rotational.size()) return "the list of rotating particles holds a dead or stray particle";
   return {};
 }
 

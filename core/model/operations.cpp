@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "model/frames.hpp"
 #include "model/model.hpp"
 
 namespace tendril {
@@ -56,28 +57,37 @@ ParticleId Model::merge(const std::vector<ParticleId>& ps) {
       }
     }
   }
-  Vec3 x = Vec3::Zero(), v = Vec3::Zero(), load = Vec3::Zero();
+  Vec3 x = Vec3::Zero(), v = Vec3::Zero(), load = Vec3::Zero(), moment = Vec3::Zero(), w = Vec3::Zero();
   std::uint8_t lock = 0;
   double point_mass = 0;
+  // The frame: the first rotating particle's (beam ends elsewhere are
+  // re-expressed in it), else the first particle's.
+  ParticleId framed = *set.begin();
+  int spinning = 0;
   for (ParticleId p : set) {
     x += particles.position[p];
     v += particles.velocity[p];
     load += particles.load[p];
+    moment += particles.moment[p];
     lock |= particles.lock[p];
     point_mass += particles.point_mass[p];
+    if (particles.rot_degree[p] > 0) {
+      if (spinning++ == 0) framed = p;
+      w += particles.angular_velocity[p];
+    }
   }
   const double n = static_cast<double>(set.size());
+  const Quat frame = particles.orientation[framed];
   ParticleId q = new_particle(x / n);
   particles.velocity[q] = v / n;
   particles.load[q] = load;
+  particles.moment[q] = moment;
   particles.lock[q] = lock;
   particles.point_mass[q] = point_mass;
+  particles.orientation[q] = frame;
+  if (spinning) particles.angular_velocity[q] = w / spinning;
   for (ParticleId p : set) {
-    for (Dart d : darts_of(p)) {
-      unembed(d);
-      embed(d, q);
-      refresh_vertex(d);
-    }
+    for (Dart d : darts_of(p)) rehome_dart(d, q);
     free_particle(p);
   }
   return q;
@@ -95,16 +105,15 @@ std::vector<ParticleId> Model::explode(ParticleId p) {
     ParticleId q = new_particle(particles.position[p]);
     particles.velocity[q] = particles.velocity[p];
     particles.lock[q] = particles.lock[p];
-    if (out.empty()) {  // the particle's own load and mass go to the first block
+    particles.orientation[q] = particles.orientation[p];
+    particles.angular_velocity[q] = particles.angular_velocity[p];
+    if (out.empty()) {  // the particle's own load, moment and mass go to the first block
       particles.load[q] = particles.load[p];
+      particles.moment[q] = particles.moment[p];
       particles.point_mass[q] = particles.point_mass[p];
     }
-    for (Dart d : darts_of(p)) {
-      if (dart_block[d] != b) continue;
-      unembed(d);
-      embed(d, q);
-      refresh_vertex(d);
-    }
+    for (Dart d : darts_of(p))
+      if (dart_block[d] == b) rehome_dart(d, q);
     out.push_back(q);
   }
   free_particle(p);
@@ -123,12 +132,10 @@ ParticleId Model::explode_from(ParticleId p, BlockId b) {
   ParticleId q = new_particle(particles.position[p]);
   particles.velocity[q] = particles.velocity[p];
   particles.lock[q] = particles.lock[p];
-  for (Dart d : darts_of(p)) {
-    if (dart_block[d] != b) continue;
-    unembed(d);
-    embed(d, q);
-    refresh_vertex(d);
-  }
+  particles.orientation[q] = particles.orientation[p];
+  particles.angular_velocity[q] = particles.angular_velocity[p];
+  for (Dart d : darts_of(p))
+    if (dart_block[d] == b) rehome_dart(d, q);
   return q;
 }
 
@@ -143,6 +150,9 @@ void check_section(const Section& s, const char* what, bool beam) {
   if (!(s.EI >= 0) || !std::isfinite(s.EI)) bad("EI");
   if (!std::isfinite(s.prestress)) bad("prestress");
   if (!(s.line_mass >= 0) || !std::isfinite(s.line_mass)) bad("line_mass");
+  if (!(s.GJ >= 0) || !std::isfinite(s.GJ)) bad("GJ");
+  if (!(s.EIy >= 0) || !std::isfinite(s.EIy)) bad("EIy");
+  if (!(s.EIz >= 0) || !std::isfinite(s.EIz)) bad("EIz");
   if (s.EA <= 0) throw ModelError(std::string(what) + ": EA must be > 0");
   if (beam && s.EI <= 0) throw ModelError(std::string(what) + ": EI must be > 0");
 }
@@ -176,7 +186,7 @@ void Model::delete_component(BlockId b) {
   std::vector<ParticleId> touched;
   for (Dart d : darts) {
     remove_hinge(d);
-    remove_bar(d);
+    remove_edge_element(d);
     touched.push_back(dart_particle[d]);
   }
   for (Dart d : darts) free_dart(d);
@@ -260,19 +270,41 @@ ParticleId Model::insert_particle(ParticleId a, ParticleId b) {
   const BlockId blk = dart_block[d];
   const Dart e = map.alpha(0, d);
   const double half = 0.5 * rest_length[d];
-  remove_bar(d);
+  const bool six = six_dof(d);
+  // On a 6-DOF beam the new node sits at the middle of the element's cubic
+  // deflection curve with that curve's frame, and both new beam ends
+  // coincide with it: the element is split without changing its state.
+  Vec3 x = 0.5 * (particles.position[a] + particles.position[b]);
+  Quat frame = Quat::Identity();
+  if (six)
+    beam6_midpoint(particles.position[a], particles.position[b], particles.orientation[a] * beam_end[d],
+                   particles.orientation[b] * beam_end[e] * end_flip(), x, frame);
+  remove_edge_element(d);
   map.unlink(0, d);
-  ParticleId q = new_particle(0.5 * (particles.position[a] + particles.position[b]));
+  ParticleId q = new_particle(x);
   particles.velocity[q] = 0.5 * (particles.velocity[a] + particles.velocity[b]);
+  if (six) {
+    particles.orientation[q] = frame;
+    particles.angular_velocity[q] = 0.5 * (particles.angular_velocity[a] + particles.angular_velocity[b]);
+  }
   Dart d2 = new_dart(blk, q), e2 = new_dart(blk, q);
+  beam_end[d2] = end_flip();  // looking back to a
+  beam_end[e2] = Quat::Identity();
   map.link(0, d, d2);
   map.link(1, d2, e2);
   map.link(0, e2, e);
-  set_edge_rest_length(d, half);
-  set_edge_rest_length(e, half);
-  add_bar(d);
-  add_bar(e);
-  add_hinge(d2);
+  if (six) {  // each half keeps the element's axial strain
+    const double l = (particles.position[b] - particles.position[a]).norm();
+    const double scale = l > 0 ? 2 * half / l : 1.0;
+    set_edge_rest_length(d, scale * (x - particles.position[a]).norm());
+    set_edge_rest_length(e, scale * (particles.position[b] - x).norm());
+  } else {
+    set_edge_rest_length(d, half);
+    set_edge_rest_length(e, half);
+  }
+  add_edge_element(d);
+  add_edge_element(e);
+  add_vertex_element(d2);
   refresh_hinge(d);
   refresh_hinge(e);
   return q;
@@ -298,13 +330,13 @@ void Model::remove_from_beam(ParticleId p) {
       throw ModelError("remove_from_beam: the neighbours of particle " + pid(p) + " are one particle; bridging would collapse the edge");
     const double length = rest_length[d] + rest_length[e];
     remove_hinge(d);
-    remove_bar(d);
-    remove_bar(e);
+    remove_edge_element(d);
+    remove_edge_element(e);
     free_dart(d);
     free_dart(e);
     map.link(0, a, b);
     set_edge_rest_length(a, length);
-    add_bar(a);
+    add_edge_element(a);  // a 6-DOF edge keeps the outer beam ends of a and b
     refresh_hinge(a);
     refresh_hinge(b);
     if (block.dart == kNoDart) block.dart = a;
@@ -314,7 +346,7 @@ void Model::remove_from_beam(ParticleId p) {
   } else {  // an end: drop the end segment
     Dart d = ds[0], a = map.alpha(0, d), a1 = map.alpha(1, a);
     remove_hinge(a);
-    remove_bar(d);
+    remove_edge_element(d);
     free_dart(d);
     free_dart(a);
     if (block.dart == kNoDart) block.dart = a1;  // the start end went: a1 starts the path now

@@ -8,6 +8,10 @@ void Particles::attach(UndoLog* undo) {
   for (auto* v : {&stiffness, &point_mass, &lumped_mass}) v->attach(undo);
   for (auto* v : {&lock, &alive, &passive, &active, &role}) v->attach(undo);
   for (auto* v : {&generation, &first_dart, &degree, &free_slots}) v->attach(undo);
+  orientation.attach(undo);
+  for (auto* v : {&angular_velocity, &torque, &moment}) v->attach(undo);
+  rot_stiffness.attach(undo);
+  for (auto* v : {&rot_degree, &rotational_slot, &rotational}) v->attach(undo);
 }
 
 ParticleId Particles::allocate(Vec3 x) {
@@ -29,6 +33,11 @@ ParticleId Particles::allocate(Vec3 x) {
     generation.push_back(0);
     first_dart.push_back(kNone);
     degree.push_back(0);
+    orientation.push_back(Quat::Identity());
+    for (auto* v : {&angular_velocity, &torque, &moment}) v->push_back(Vec3::Zero());
+    rot_stiffness.push_back(0);
+    rot_degree.push_back(0);
+    rotational_slot.push_back(kNone);
   }
   position[p] = x;
   velocity[p].setZero();
@@ -44,9 +53,42 @@ ParticleId Particles::allocate(Vec3 x) {
   role[p] = 0;
   first_dart[p] = kNone;
   degree[p] = 0;
+  orientation[p] = Quat::Identity();
+  angular_velocity[p].setZero();
+  torque[p].setZero();
+  moment[p].setZero();
+  rot_stiffness[p] = 0;
+  rot_degree[p] = 0;
+  rotational_slot[p] = kNone;
   if (log) log->scalar(live);
   ++live;
   return p;
+}
+
+void Particles::add_rotational_end(ParticleId p) {
+  if (rot_degree[p]++ != 0) return;
+  rotational_slot[p] = static_cast<std::uint32_t>(rotational.size());
+  rotational.push_back(p);
+}
+
+void Particles::remove_rotational_end(ParticleId p) {
+  if (--rot_degree[p] != 0) return;
+  const std::uint32_t slot = rotational_slot[p];
+  const ParticleId last = rotational.back();
+  if (last != p) {
+    rotational[slot] = last;
+    rotational_slot[last] = slot;
+  }
+  rotational.pop_back();
+  rotational_slot[p] = kNone;
+}
+
+void Particles::clear_rotational() {
+  for (ParticleId p = 0; p < capacity(); ++p) {
+    rot_degree[p] = 0;
+    rotational_slot[p] = kNone;
+  }
+  rotational.clear();
 }
 
 void Particles::release(ParticleId p) {

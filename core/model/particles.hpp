@@ -10,6 +10,12 @@ namespace tendril {
 
 // Writes through operator[] are logged during transactions; the solver
 // reaches the hot columns through data().
+//
+// Rotational degrees of freedom (thesis 3.2.3, 3.2.6) live in their own
+// columns and only matter for particles on a 6-DOF beam: `rot_degree` counts
+// the 6-DOF beam ends on a particle, and `rotational` lists the particles
+// whose count is > 0 (`rotational_slot` is the place in that list), so the
+// solver's rotational work touches those only.
 struct Particles {
   LoggedVector<Vec3> position, velocity, force, load;
   LoggedVector<double> stiffness;   // greatest direct stiffness S (eq. 3.4)
@@ -23,6 +29,15 @@ struct Particles {
   LoggedVector<std::uint32_t> first_dart;  // head of the ring of darts embedding it
   LoggedVector<std::uint32_t> degree;      // number of darts embedding it
   LoggedVector<ParticleId> free_slots;
+  // Rotation: node frame R (its columns are the local axes in global
+  // coordinates), angular velocity, residual torque, external moment, and the
+  // greatest rotational stiffness (eq. 3.49-3.50) of the last evaluation.
+  LoggedVector<Quat> orientation;
+  LoggedVector<Vec3> angular_velocity, torque, moment;
+  LoggedVector<double> rot_stiffness;
+  LoggedVector<std::uint32_t> rot_degree;       // 6-DOF beam ends on the particle
+  LoggedVector<std::uint32_t> rotational_slot;  // index in `rotational`, or kNone
+  LoggedVector<ParticleId> rotational;          // particles with rot_degree > 0
   std::size_t live = 0;
   UndoLog* log = nullptr;
 
@@ -33,6 +48,10 @@ struct Particles {
   ParticleId allocate(Vec3 x);  // by value: x may live in `position`
   void release(ParticleId p);
   void refresh_active(ParticleId p) { active[p] = alive[p] && degree[p] > 0 && !passive[p]; }
+  // One more / one fewer 6-DOF beam end on p; keeps `rotational` in step.
+  void add_rotational_end(ParticleId p);
+  void remove_rotational_end(ParticleId p);
+  void clear_rotational();  // every count 0, the list empty (rebuilds)
 };
 
 }  // namespace tendril

@@ -8,6 +8,10 @@
 namespace tendril {
 
 using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+// Orientations (node frames, beam ends). Unaligned so they sit in plain
+// vectors, element structs and undo-log closures without alignment rules.
+using Quat = Eigen::Quaternion<double, Eigen::DontAlign>;
 using ParticleId = std::uint32_t;
 using BlockId = std::uint32_t;
 using ElementIndex = std::uint32_t;
@@ -33,11 +37,20 @@ inline constexpr std::uint8_t kLockRotation = kLockRX | kLockRY | kLockRZ;
 
 // Section and material of a block. Stiffnesses are given as products so a
 // scene may state either E, A, I or EA, EI directly.
+// The 6-DOF beam (eq. 3.44-3.50) also reads GJ, EIy and EIz; 0 means "as EI"
+// (EIy = EIz = EI, and GJ = EI: a circular tube with G = E/2, the thesis'
+// material of 5.5.2). The 3-DOF spline beam reads EI only.
 struct Section {
   double EA = 0;         // axial stiffness [N]
   double EI = 0;         // bending stiffness [N m^2], beams only
   double prestress = 0;  // geometric tension T of eq. 3.32 [N]
   double line_mass = 0;  // physical mass per length [kg/m], lumped to particles
+  double GJ = 0;         // torsional stiffness [N m^2], 6-DOF beams; 0: EI
+  double EIy = 0;        // bending about the section's y axis [N m^2]; 0: EI
+  double EIz = 0;        // bending about the section's z axis [N m^2]; 0: EI
+  double torsion() const { return GJ > 0 ? GJ : EI; }
+  double bending_y() const { return EIy > 0 ? EIy : EI; }
+  double bending_z() const { return EIz > 0 ? EIz : EI; }
 };
 
 // Thrown for any invalid request on the model: the model is unchanged.

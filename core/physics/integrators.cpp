@@ -1,16 +1,25 @@
-// Explicit time integrators for translation (thesis 3.2.5). Each starts from
-// the forces and masses of the step's start (Solver::step) and ends with the
-// kinetic-energy bookkeeping of eq. 3.28. Locked axes have zero acceleration
-// and zero velocity. The multi-stage methods evaluate their stages on scratch
-// buffers and write the model only once every stage was finite, so a
-// NumericalError leaves positions and velocities as they were.
+// Explicit time integrators for translation (thesis 3.2.5) and rotation
+// (3.2.6). Each starts from the forces, torques, masses and inertias of the
+// step's start (Solver::step) and ends with the kinetic-energy bookkeeping of
+// eq. 3.28. Locked axes have zero acceleration and zero velocity. The
+// multi-stage methods evaluate their stages on scratch buffers and write the
+// model only once every stage was finite, so a NumericalError leaves
+// positions, frames and velocities as they were.
+// Rotation mirrors translation with x -> R, v -> w, F/M -> T/I and the drift
+// x + h v -> R_T(h w) R (eq. 3.16-3.17); it runs over the rotating particles.
 #include <algorithm>
 #include <cmath>
 
+#include "model/frames.hpp"
 #include "physics/free_axes.hpp"
 #include "physics/solver.hpp"
 
 namespace tendril {
+
+namespace {
+// Eq. 3.17: the frame q turned by the rotation vector r (global axes).
+inline Quat turned(const Vec3& r, const Quat& q) { return Quat(rotation_of(r) * q).normalized(); }
+}  // namespace
 
 // Leapfrog (eq. 3.11-3.12, with eq. 3.26) and Symplectic Euler are the same
 // kick-drift recurrence: the new velocity moves the particle, so it lags the
@@ -44,9 +53,22 @@ void Solver::kick_drift(bool whole_kick) {
     ke += M * v[p].squaredNorm();                                                        // eq. 3.28
     momentum2 = std::max(momentum2, M * M * v[p].squaredNorm());
   }
+  const std::vector<ParticleId>& rotating = P.rotational.raw();
+  Vec3* w = P.angular_velocity.data();
+  const Vec3* T = P.torque.data();
+  const double* inertia = inertia_.data();
+  for (ParticleId p : rotating) {
+    if (!active[p]) continue;
+    const double I = inertia[p];
+    w[p] = (keep * w[p] + (first * B * dt / I) * T[p]).cwiseProduct(free_rotation_axes(lock[p]));  // eq. 3.21 / 3.27
+    ke += I * w[p].squaredNorm();                                                                // eq. 3.28
+    momentum2 = std::max(momentum2, I * I * w[p].squaredNorm());
+  }
   Vec3* x = P.position.data();
+  Quat* R = P.orientation.data();
   if (kinetic_peak_passed(ke)) {
     // Peak passed: move back to the interpolated peak (eq. 3.29-3.31), stop.
+    // Frames turn back by the same interpolation of their rotation vector.
     double q = 0;
     if (ke_samples_ >= 2) {
       const double G = ke_prev2_ - ke_prev_, H = ke_prev_ - ke;
@@ -58,11 +80,19 @@ void Solver::kick_drift(bool whole_kick) {
       x[p] += dt * v[p] - dt * (1 + q) * v[p] + 0.5 * dt * dt * q * Ff / mass[p];
       v[p].setZero();
     }
+    for (ParticleId p : rotating) {
+      if (!active[p]) continue;
+      const Vec3 Tf = T[p].cwiseProduct(free_rotation_axes(lock[p]));
+      R[p] = turned(-dt * q * w[p] + 0.5 * dt * dt * q * Tf / inertia[p], R[p]);
+      w[p].setZero();
+    }
     record_reset();
     return;
   }
   for (std::size_t p = 0; p < n; ++p)
     if (active[p]) x[p] += dt * v[p];  // eq. 3.12
+  for (ParticleId p : rotating)
+    if (active[p]) R[p] = turned(dt * w[p], R[p]);  // eq. 3.19
   record_energy(ke, momentum2);
   half_step_ = true;
 }
@@ -78,6 +108,10 @@ void Solver::synchronize_velocities() {
   const double h = 0.5 * settings.dt;
   for (std::size_t p = 0; p < P.capacity(); ++p)
     if (active[p]) vel[p] = (vel[p] + (h / mass_[p]) * force[p]).cwiseProduct(free_axes(lock[p]));
+  Vec3* w = P.angular_velocity.data();
+  const Vec3* T = P.torque.data();
+  for (ParticleId p : P.rotational.raw())
+    if (active[p]) w[p] = (w[p] + (h / inertia_[p]) * T[p]).cwiseProduct(free_rotation_axes(lock[p]));
   half_step_ = false;
 }
 
@@ -103,6 +137,18 @@ void Solver::integrate_velocity_verlet() {
     vs_[p] = ((1 - C / 2) * v[p] + (h / mass[p]) * F[p]).cwiseProduct(free);
     xs_[p] = x[p] + dt * vs_[p];
   }
+  const std::vector<ParticleId>& rotating = P.rotational.raw();
+  const Quat* R = P.orientation.data();
+  const Vec3 *w = P.angular_velocity.data(), *T = P.torque.data();
+  const double* inertia = inertia_.data();
+  for (ParticleId p : rotating) {
+    if (!active[p]) {
+      qs_[p] = R[p];
+      continue;
+    }
+    ws_[p] = ((1 - C / 2) * w[p] + (h / inertia[p]) * T[p]).cwiseProduct(free_rotation_axes(lock[p]));
+    qs_[p] = turned(dt * ws_[p], R[p]);
+  }
   stage_forces();
   double ke = 0, momentum2 = 0;
   for (std::size_t p = 0; p < n; ++p) {
@@ -112,7 +158,14 @@ void Solver::integrate_velocity_verlet() {
     ke += M * vs_[p].squaredNorm();
     momentum2 = std::max(momentum2, M * M * vs_[p].squaredNorm());
   }
-  commit(xs_.data(), vs_.data(), ke, momentum2);
+  for (ParticleId p : rotating) {
+    if (!active[p]) continue;
+    const double I = inertia[p];
+    ws_[p] = (ws_[p] + (h / I) * Ts_[p].cwiseProduct(free_rotation_axes(lock[p]))) / (1 + C / 2);
+    ke += I * ws_[p].squaredNorm();
+    momentum2 = std::max(momentum2, I * I * ws_[p].squaredNorm());
+  }
+  commit(xs_.data(), vs_.data(), qs_.data(), ws_.data(), ke, momentum2);
 }
 
 void Solver::integrate_midpoint() {
@@ -137,6 +190,21 @@ void Solver::integrate_midpoint() {
     xs_[p] = x[p] + h * v0;
     vs_[p] = v0 + h * a0;
   }
+  const std::vector<ParticleId>& rotating = P.rotational.raw();
+  const Quat* R = P.orientation.data();
+  const Vec3 *w = P.angular_velocity.data(), *T = P.torque.data();
+  const double* inertia = inertia_.data();
+  for (ParticleId p : rotating) {
+    if (!active[p]) {
+      qs_[p] = R[p];
+      continue;
+    }
+    const Vec3 free = free_rotation_axes(lock[p]);
+    const Vec3 w0 = w[p].cwiseProduct(free);
+    const Vec3 a0 = T[p].cwiseProduct(free) / inertia[p] - c * w0;
+    qs_[p] = turned(h * w0, R[p]);
+    ws_[p] = w0 + h * a0;
+  }
   stage_forces();
   double ke = 0, momentum2 = 0;
   for (std::size_t p = 0; p < n; ++p) {
@@ -149,7 +217,17 @@ void Solver::integrate_midpoint() {
     ke += M * vs_[p].squaredNorm();
     momentum2 = std::max(momentum2, M * M * vs_[p].squaredNorm());
   }
-  commit(xs_.data(), vs_.data(), ke, momentum2);
+  for (ParticleId p : rotating) {
+    if (!active[p]) continue;
+    const Vec3 free = free_rotation_axes(lock[p]);
+    const double I = inertia[p];
+    const Vec3 am = Ts_[p].cwiseProduct(free) / I - c * ws_[p];
+    qs_[p] = turned(dt * ws_[p], R[p]);
+    ws_[p] = w[p].cwiseProduct(free) + dt * am;
+    ke += I * ws_[p].squaredNorm();
+    momentum2 = std::max(momentum2, I * I * ws_[p].squaredNorm());
+  }
+  commit(xs_.data(), vs_.data(), qs_.data(), ws_.data(), ke, momentum2);
 }
 
 void Solver::integrate_rk4() {
@@ -177,6 +255,25 @@ void Solver::integrate_rk4() {
     xs_[p] = x[p] + (0.5 * dt) * L1;
     vs_[p] = L1 + (0.5 * dt) * K1;
   }
+  // Rotation, eq. 3.22-3.25: L_R are angular velocities, K_R angular
+  // accelerations at the frames R_T(h L_R) R.
+  const std::vector<ParticleId>& rotating = P.rotational.raw();
+  const Quat* R = P.orientation.data();
+  const Vec3 *w = P.angular_velocity.data(), *T = P.torque.data();
+  const double* inertia = inertia_.data();
+  for (ParticleId p : rotating) {
+    if (!active[p]) {
+      qs_[p] = R[p];
+      continue;
+    }
+    const Vec3 free = free_rotation_axes(lock[p]);
+    const Vec3 L1 = w[p].cwiseProduct(free);
+    const Vec3 K1 = T[p].cwiseProduct(free) / inertia[p] - c * L1;
+    sum_r_[p] = L1;
+    sum_w_[p] = K1;
+    qs_[p] = turned((0.5 * dt) * L1, R[p]);
+    ws_[p] = L1 + (0.5 * dt) * K1;
+  }
   // j = 2, 3: weight 2; the next stage sits at h = dt/2, then dt.
   for (double h : {0.5 * dt, dt}) {
     stage_forces();
@@ -189,6 +286,16 @@ void Solver::integrate_rk4() {
       sum_v_[p] += 2 * K;
       xs_[p] = x[p] + h * L;
       vs_[p] = v[p].cwiseProduct(free) + h * K;
+    }
+    for (ParticleId p : rotating) {
+      if (!active[p]) continue;
+      const Vec3 free = free_rotation_axes(lock[p]);
+      const Vec3 L = ws_[p];
+      const Vec3 K = Ts_[p].cwiseProduct(free) / inertia[p] - c * L;
+      sum_r_[p] += 2 * L;
+      sum_w_[p] += 2 * K;
+      qs_[p] = turned(h * L, R[p]);
+      ws_[p] = w[p].cwiseProduct(free) + h * K;
     }
   }
   stage_forces();  // j = 4
@@ -204,17 +311,32 @@ void Solver::integrate_rk4() {
     ke += M * vs_[p].squaredNorm();
     momentum2 = std::max(momentum2, M * M * vs_[p].squaredNorm());
   }
-  commit(xs_.data(), vs_.data(), ke, momentum2);
+  for (ParticleId p : rotating) {
+    if (!active[p]) continue;
+    const Vec3 free = free_rotation_axes(lock[p]);
+    const double I = inertia[p];
+    const Vec3 L = ws_[p];
+    const Vec3 K = Ts_[p].cwiseProduct(free) / I - c * L;
+    qs_[p] = turned((dt / 6) * (sum_r_[p] + L), R[p]);              // eq. 3.22-3.23
+    ws_[p] = w[p].cwiseProduct(free) + (dt / 6) * (sum_w_[p] + K);  // eq. 3.24
+    ke += I * ws_[p].squaredNorm();
+    momentum2 = std::max(momentum2, I * I * ws_[p].squaredNorm());
+  }
+  commit(xs_.data(), vs_.data(), qs_.data(), ws_.data(), ke, momentum2);
 }
 
-void Solver::commit(const Vec3* xn, const Vec3* vn, double ke, double momentum2) {
+void Solver::commit(const Vec3* xn, const Vec3* vn, const Quat* qn, const Vec3* wn, double ke, double momentum2) {
   Particles& P = model_.particles;
   const std::uint8_t* active = P.active.data();
   const std::size_t n = P.capacity();
-  Vec3 *pos = P.position.data(), *vel = P.velocity.data();
+  Vec3 *pos = P.position.data(), *vel = P.velocity.data(), *w = P.angular_velocity.data();
+  Quat* R = P.orientation.data();
+  const std::vector<ParticleId>& rotating = P.rotational.raw();
   if (kinetic_peak_passed(ke)) {  // stay at the step's start: the discrete peak
     for (std::size_t p = 0; p < n; ++p)
       if (active[p]) vel[p].setZero();
+    for (ParticleId p : rotating)
+      if (active[p]) w[p].setZero();
     record_reset();
     return;
   }
@@ -222,6 +344,11 @@ void Solver::commit(const Vec3* xn, const Vec3* vn, double ke, double momentum2)
     if (!active[p]) continue;
     pos[p] = xn[p];
     vel[p] = vn[p];
+  }
+  for (ParticleId p : rotating) {
+    if (!active[p]) continue;
+    R[p] = qn[p];
+    w[p] = wn[p];
   }
   record_energy(ke, momentum2);
 }

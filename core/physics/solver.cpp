@@ -71,7 +71,8 @@ std::optional<MassMode> parse_mass_mode(std::string_view name) {
 
 void Solver::compute_forces() {
   Particles& P = model_.particles;
-  accumulate_forces(P.position.data(), P.force.data(), P.stiffness.data());
+  accumulate_forces(P.position.data(), P.orientation.data(), P.force.data(), P.stiffness.data(), P.torque.data(),
+                    P.rot_stiffness.data());
   ++evaluations_;
 }
 
@@ -93,6 +94,8 @@ void Solver::step() {
 void Solver::size_scratch() {
   const std::size_t n = model_.particles.capacity();
   if (mass_.size() != n) mass_.resize(n);
+  const bool rotating = !model_.particles.rotational.empty();
+  if (rotating && inertia_.size() != n) inertia_.resize(n);
   const Integrator i = settings.integrator;
   if (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) return;
   if (xs_.size() != n) {
@@ -101,9 +104,19 @@ void Solver::size_scratch() {
     vs_.resize(n);
     Ss_.resize(n);
   }
+  if (rotating && qs_.size() != n) {
+    qs_.resize(n);
+    Ts_.resize(n);
+    ws_.resize(n);
+    Ks_.resize(n);
+  }
   if (i == Integrator::RK4 && sum_x_.size() != n) {
     sum_x_.resize(n);
     sum_v_.resize(n);
+  }
+  if (i == Integrator::RK4 && rotating && sum_r_.size() != n) {
+    sum_r_.resize(n);
+    sum_w_.resize(n);
   }
 }
 
@@ -140,17 +153,60 @@ void Solver::prepare_masses() {
     mass_[p] = M;
     residual2 = std::max(residual2, P.force[p].cwiseProduct(free).squaredNorm());
   }
-  residual_ = std::sqrt(residual2);
+  double torque2 = 0;
+  if (!P.rotational.empty()) {
+    if (physical) {
+      // A half element of line mass mu and length L turning about its node:
+      // mu L^3 / 24, the same about every axis (isotropic, thesis 3.2.4.2).
+      for (ParticleId p : P.rotational.raw()) inertia_[p] = 0;
+      for (const Beam6& b : model_.beam6s.items) {
+        const double I = b.line_mass * b.rest_length * b.rest_length * b.rest_length / 24;
+        inertia_[b.i] += I;
+        inertia_[b.j] += I;
+      }
+    }
+    for (ParticleId p : P.rotational.raw()) {
+      if (!P.active[p]) continue;
+      if (!P.torque[p].allFinite() || !std::isfinite(P.rot_stiffness[p]))
+        throw NumericalError("solver: the torque on particle " + std::to_string(p) + " is not finite at step " +
+                             std::to_string(steps_) + "; no particle was moved");
+      const Vec3 free = free_rotation_axes(P.lock[p]);
+      if (physical) {
+        if (!(inertia_[p] > 0)) {
+          if (!free.isZero())
+            throw ModelError("solver: particle " + std::to_string(p) +
+                             " has no rotary inertia; mass_mode \"physical\" needs a line mass on its 6-DOF beams "
+                             "or its rotations locked");
+          inertia_[p] = 1;
+        }
+      } else {
+        inertia_[p] = mass_scale * P.rot_stiffness[p];  // eq. 3.50 with eq. 3.4
+        if (!(inertia_[p] > 0))
+          throw NumericalError("solver: particle " + std::to_string(p) + " has no rotational stiffness at step " +
+                               std::to_string(steps_));
+      }
+      torque2 = std::max(torque2, P.torque[p].cwiseProduct(free).squaredNorm());
+    }
+  }
+  torque_residual_ = std::sqrt(torque2);
+  residual_ = std::max(std::sqrt(residual2), torque_residual_);
 }
 
 void Solver::stage_forces() {
-  accumulate_forces(xs_.data(), Fs_.data(), Ss_.data());
+  accumulate_forces(xs_.data(), qs_.data(), Fs_.data(), Ss_.data(), Ts_.data(), Ks_.data());
   ++evaluations_;
   const Particles& P = model_.particles;
   for (std::size_t p = 0; p < P.capacity(); ++p) {
     if (!P.active[p]) continue;
     if (!Fs_[p].allFinite() || !xs_[p].allFinite())
       throw NumericalError("solver: the force on particle " + std::to_string(p) + " is not finite at a " +
+                           integrator_name(settings.integrator) + " stage of step " + std::to_string(steps_) +
+                           "; no particle was moved");
+  }
+  for (ParticleId p : P.rotational.raw()) {
+    if (!P.active[p]) continue;
+    if (!Ts_[p].allFinite() || !qs_[p].coeffs().allFinite())
+      throw NumericalError("solver: the torque on particle " + std::to_string(p) + " is not finite at a " +
                            integrator_name(settings.integrator) + " stage of step " + std::to_string(steps_) +
                            "; no particle was moved");
   }
@@ -210,9 +266,17 @@ Vec3 Solver::reaction(ParticleId p) const {
   return -model_.particles.force[p].cwiseProduct(locked);
 }
 
+Vec3 Solver::reaction_moment(ParticleId p) const {
+  model_.require_particle(p, "reaction_moment");
+  if (model_.particles.rot_degree[p] == 0) return Vec3::Zero();
+  const Vec3 locked = Vec3::Ones() - free_rotation_axes(model_.particles.lock[p]);
+  return -model_.particles.torque[p].cwiseProduct(locked);
+}
+
 void Solver::reset_motion() {
   Particles& P = model_.particles;
   for (auto& v : P.velocity.raw()) v.setZero();
+  for (auto& w : P.angular_velocity.raw()) w.setZero();
   ke_samples_ = 0;
   ke_prev_ = ke_prev2_ = kinetic_energy_ = 0;
   half_step_ = false;

@@ -3,6 +3,10 @@
 // elements and loads, lumped masses (fictitious, eq. 3.4, or physical), an
 // explicit time integrator for translation (eq. 3.9-3.15) and viscous
 // (eq. 3.26) or kinetic damping (eq. 3.28-3.31).
+// Particles on 6-DOF beams also rotate (eq. 3.16-3.25, 3.27-3.28): torques,
+// inertias (eq. 3.49-3.50 with eq. 3.4), angular velocities in global
+// coordinates and frames updated by the rotation of eq. 3.16-3.17, in every
+// integrator. That work runs over Particles::rotational only.
 // The step allocates nothing once the scratch buffers match the particle
 // capacity, and reads the topology only through the buffers.
 #include <array>
@@ -71,7 +75,7 @@ struct SolverSettings {
 
 struct RunResult {
   std::uint64_t steps = 0;  // steps taken by this run
-  double residual = 0;      // largest unconstrained force norm [N]
+  double residual = 0;      // largest unconstrained force [N] or torque [N m]
   bool converged = false;
 };
 
@@ -93,11 +97,15 @@ class Solver {
   RunResult run(double tolerance, std::uint64_t max_steps,
                 const std::function<void(const RunResult&)>& progress = {}, std::uint64_t progress_every = 1000);
 
-  void compute_forces();  // residual forces and direct stiffnesses at the current positions
-  // Largest unconstrained force at the start of the last step.
+  // Residual forces, torques and direct stiffnesses at the current positions
+  // and frames.
+  void compute_forces();
+  // Largest unconstrained force [N] or torque [N m] at the start of the last step.
   double residual() const { return residual_; }
-  double kinetic_energy() const { return kinetic_energy_; }
-  // Largest M |v| / dt: the force that would stop the fastest particle in one step.
+  double torque_residual() const { return torque_residual_; }  // the torques alone
+  double kinetic_energy() const { return kinetic_energy_; }  // eq. 3.28, rotation included
+  // Largest M |v| / dt or I |w| / dt: the force (torque) that would stop the
+  // fastest particle in one step.
   double motion() const { return motion_; }
   std::uint64_t steps() const { return steps_; }
   double time() const { return time_; }
@@ -106,14 +114,18 @@ class Solver {
   // The force the supports exert on a locked particle (minus the residual
   // force along its locked axes) at the start of the last step.
   Vec3 reaction(ParticleId p) const;
+  // The moment the supports exert on a rotation-locked particle.
+  Vec3 reaction_moment(ParticleId p) const;
   // Forgets velocities and the kinetic-energy history (after a topology change
   // that invalidates them, or on request).
   void reset_motion();
 
  private:
-  void accumulate_forces(const Vec3* x, Vec3* F, double* S) const;  // forces.cpp
+  // forces.cpp: forces F and stiffnesses S at positions x; torques T and
+  // rotational stiffnesses K (rotating particles only) at frames q.
+  void accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S, Vec3* T, double* K) const;
   void size_scratch();
-  void prepare_masses();  // mass_ and residual_; throws before anything moves
+  void prepare_masses();  // mass_, inertia_ and residual_; throws before anything moves
   void stage_forces();    // forces at xs_ into Fs_, Ss_; throws if not finite
   double viscous_rate() const;  // c * dt = C when viscous, else 0
   // integrators.cpp
@@ -124,8 +136,9 @@ class Solver {
   void integrate_midpoint();
   void integrate_rk4();
   void synchronize_velocities();  // Leapfrog's v(t - dt/2) -> v(t)
-  // Ends a step of a synchronous integrator whose new state is (xn, vn).
-  void commit(const Vec3* xn, const Vec3* vn, double ke, double momentum2);
+  // Ends a step of a synchronous integrator whose new state is (xn, vn) and,
+  // for rotating particles, (qn, wn).
+  void commit(const Vec3* xn, const Vec3* vn, const Quat* qn, const Vec3* wn, double ke, double momentum2);
   // Kinetic damping: the kinetic energy `ke` of the new velocities is below
   // (or, for the synchronous methods, not above) the previous step's.
   bool kinetic_peak_passed(double ke) const;
@@ -133,7 +146,7 @@ class Solver {
   void record_reset();
 
   Model& model_;
-  double residual_ = 0, motion_ = 0;
+  double residual_ = 0, torque_residual_ = 0, motion_ = 0;
   double kinetic_energy_ = 0;
   double ke_prev_ = 0, ke_prev2_ = 0;  // E and D of eq. 3.29
   int ke_samples_ = 0;
@@ -145,6 +158,12 @@ class Solver {
   std::vector<Vec3> xs_, Fs_, vs_;  // stage positions, forces, velocities
   std::vector<double> Ss_;         // stage stiffnesses (unused but written)
   std::vector<Vec3> sum_x_, sum_v_;  // RK4's weighted sums of L and K (eq. 3.13-3.14)
+  // Rotation, read and written for rotating particles only.
+  std::vector<double> inertia_;     // I of this step (eq. 3.50 with eq. 3.4, or physical)
+  std::vector<Quat> qs_;            // stage frames
+  std::vector<Vec3> Ts_, ws_;       // stage torques, angular velocities
+  std::vector<double> Ks_;          // stage rotational stiffnesses (unused but written)
+  std::vector<Vec3> sum_r_, sum_w_;  // RK4's sums of L_R and K_R (eq. 3.22-3.24)
 };
 
 }  // namespace tendril

@@ -181,6 +181,60 @@ define("drop_double", "drop-like loop with a double joint: first two onto the la
     return m:merge{ ps[1], ps[n] }, m:merge{ ps[2], ps[n - 1] }
   end)
 
+-- Tensile patches (thesis 4.2.7.4, meshing/; see docs/meshing.md) ------------
+-- Each takes the options table of the model method it wraps and returns the
+-- new patch. The boundary particles become shared, the new ones are simple.
+
+local function particle_list(options, key)
+  if type(options) ~= "table" or type(options[key]) ~= "table" then
+    return nil, string.format("needs options with '%s', a list of particles", key)
+  end
+  return options[key]
+end
+
+local function at_least(options, key, n)
+  local ps, why = particle_list(options, key)
+  if not ps then return false, why end
+  return #ps >= n, string.format("'%s' has %d particles, needs at least %d", key, #ps, n)
+end
+
+local function two_sequences(options, least)
+  local a, why = particle_list(options, "from")
+  if not a then return false, why end
+  local b, why_b = particle_list(options, "to")
+  if not b then return false, why_b end
+  if #a ~= #b then return false, string.format("'from' has %d particles and 'to' %d", #a, #b) end
+  return #a >= least, string.format("each sequence has %d particles, needs at least %d", #a, least)
+end
+
+define("patch_subdivision", "rule 19: a tensile patch from particles by Catmull-Clark subdivision",
+  function(m, options) return at_least(options, "particles", 3) end,
+  function(m, options) return m:catmull_clark(options) end)
+
+define("patch_paving", "rule 20: a tensile patch from particles by paving",
+  function(m, options) return at_least(options, "particles", 8) end,
+  function(m, options) return m:pave(options) end)
+
+define("patch_projection", "rule 21: a tensile patch between two particle sequences by projection",
+  function(m, options) return two_sequences(options, 2) end,
+  function(m, options) return m:project(options) end)
+
+-- Rule 22 builds the tube between two rings; cutting the rings out of two
+-- patches' interiors first needs patch deletion (rules 23, 27) in the model.
+define("patch_tube", "rule 22: a tube of quads between two rings of particles",
+  function(m, options) return two_sequences(options, 3) end,
+  function(m, options)
+    local tube = {}
+    for k, v in pairs(options) do tube[k] = v end
+    tube.closed = true
+    return m:project(tube)
+  end)
+
+-- The old patch stays until the model can delete patches (rule 27).
+define("patch_refine", "rule 25: subdivide a tensile patch by Catmull-Clark",
+  function(m, patch) return kind_is(m, patch, "patch") end,
+  function(m, patch, section) return m:subdivide_patch(patch, section) end)
+
 tendril.rules = rules
 
 -- tendril.report(m, extra): m:summary() and the extra fields as one CSV row

@@ -18,6 +18,7 @@
 #include <tuple>
 #include <vector>
 
+#include "model/frames.hpp"
 #include "model/model.hpp"
 
 namespace tendril {
@@ -77,6 +78,12 @@ BarKey key(const Bar& b) {
 }
 HingeKey key(const Hinge& h) { return {h.i, h.j, h.k, h.EI, h.rest_curvature, h.dart}; }
 
+// A 6-DOF beam element, every field (quaternions as their coefficients).
+std::vector<double> key(const Beam6& b) {
+  return {double(b.i), double(b.j), b.end_i.w(), b.end_i.x(), b.end_i.y(), b.end_i.z(), b.end_j.w(), b.end_j.x(),
+          b.end_j.y(), b.end_j.z(), b.rest_length, b.EA, b.EIy, b.EIz, b.GJ, b.prestress, b.line_mass, double(b.dart)};
+}
+
 // Everything observable about a model, compared exactly (no tolerance): a
 // refused operation must not move a single bit.
 struct Snapshot {
@@ -93,6 +100,12 @@ struct Snapshot {
   std::vector<BlockKey> blocks;
   std::vector<std::uint32_t> darts;  // per dart: alive, alpha0-2, particle, block, bar, hinge, ring
   std::vector<double> rest;
+  // 6 DOF: elements, formulations, per-dart beam ends, rotational state.
+  std::vector<std::vector<double>> beam6s;
+  std::vector<int> dofs;
+  std::vector<double> beam_ends, rotation;
+  std::vector<std::uint32_t> rot_counts;
+  std::vector<ParticleId> rotating;
 
   explicit Snapshot(const Model& m) {
     particle_count = m.particle_count();
@@ -126,9 +139,19 @@ struct Snapshot {
     for (Dart d = 0; d < m.map.capacity(); ++d) {
       darts.insert(darts.end(), {std::uint32_t(m.map.alive(d)), m.map.alpha(0, d), m.map.alpha(1, d),
                                  m.map.alpha(2, d), m.dart_particle[d], m.dart_block[d], m.dart_bar[d],
-                                 m.dart_hinge[d], m.ring_next[d], m.ring_prev[d]});
+                                 m.dart_hinge[d], m.ring_next[d], m.ring_prev[d], m.dart_beam6[d]});
       rest.push_back(m.rest_length[d]);
+      for (int k = 0; k < 4; ++k) beam_ends.push_back(m.beam_end[d].coeffs()[k]);
     }
+    for (const Beam6& b : m.beam6s.items) beam6s.push_back(key(b));
+    for (const Block& b : m.blocks) dofs.push_back(b.dofs);
+    for (ParticleId p = 0; p < P.capacity(); ++p) {
+      for (int k = 0; k < 4; ++k) rotation.push_back(P.orientation[p].coeffs()[k]);
+      for (const Vec3* v : {&P.angular_velocity[p], &P.moment[p]}) rotation.insert(rotation.end(), v->data(), v->data() + 3);
+      rot_counts.push_back(P.rot_degree[p]);
+      rot_counts.push_back(P.rotational_slot[p]);
+    }
+    rotating = P.rotational;
   }
 
   // Names the first field that differs, or "" when equal.
@@ -162,6 +185,12 @@ struct Snapshot {
     TENDRIL_FIELD(blocks)
     TENDRIL_FIELD(darts)
     TENDRIL_FIELD(rest)
+    TENDRIL_FIELD(beam6s)
+    TENDRIL_FIELD(dofs)
+    TENDRIL_FIELD(beam_ends)
+    TENDRIL_FIELD(rotation)
+    TENDRIL_FIELD(rot_counts)
+    TENDRIL_FIELD(rotating)
 #undef TENDRIL_FIELD
     return {};
   }
@@ -177,6 +206,25 @@ BarSet bar_multiset(const Model& m) {
   for (const Bar& b : m.bars.items)
     out.emplace_back(std::min(b.i, b.j), std::max(b.i, b.j), b.rest_length, b.EA, b.prestress, b.line_mass,
                      int(b.tension_only));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// 6-DOF elements as multisets of their two ends, each end as its particle
+// and the beam end stored at its dart (the element may start at either dart).
+using Beam6Set = std::vector<std::vector<double>>;
+Beam6Set beam6_multiset(const Model& m) {
+  Beam6Set out;
+  const Quat back = end_flip().conjugate();
+  for (const Beam6& b : m.beam6s.items) {
+    const Quat ej = b.end_j * back;
+    std::vector<double> a{double(b.i), b.end_i.w(), b.end_i.x(), b.end_i.y(), b.end_i.z()};
+    std::vector<double> c{double(b.j), ej.w(), ej.x(), ej.y(), ej.z()};
+    if (c < a) std::swap(a, c);
+    a.insert(a.end(), c.begin(), c.end());
+    a.insert(a.end(), {b.rest_length, b.EA, b.EIy, b.EIz, b.GJ, b.prestress, b.line_mass});
+    out.push_back(a);
+  }
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -1406,11 +1454,14 @@ struct Fuzzer {
   Vec3 point() { return Vec3(uniform(-6, 6), uniform(-6, 6), uniform(-2, 4)); }
 
   void seed_scene() {
-    for (int k = 0; k < 3; ++k) m.add_beam(add_row(m, 5, Vec3(0, 2.0 * k, 0)), beam_section(1.5));
+    for (int k = 0; k < 3; ++k) {
+      const BlockId b = m.add_beam(add_row(m, 5, Vec3(0, 2.0 * k, 0)), beam_section(1.5));
+      if (k == 1) m.set_beam_formulation(b, 6);
+    }
     std::vector<ParticleId> ring;
     for (int k = 0; k < 6; ++k)
       ring.push_back(m.add_particle(Vec3(std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 3)));
-    m.add_beam(ring, beam_section(0.5), true);
+    m.set_beam_formulation(m.add_beam(ring, beam_section(0.5), true), 6);
     std::vector<ParticleId> grid;
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 4; ++c) grid.push_back(m.add_particle(Vec3(c, r, -1)));
@@ -1479,8 +1530,8 @@ struct Fuzzer {
     // Weights per operation, shifted towards deletions when the model grows.
     const bool crowded = m.particle_count() > 120;
     const std::vector<double> weights =
-        crowded ? std::vector<double>{1, 6, 8, 4, 4, 3, 3, 1, 2, 2, 6, 6, 0.5, 2, 2, 4, 4, 4, 4}
-                : std::vector<double>{4, 4, 8, 4, 4, 5, 5, 4, 4, 4, 4, 4, 2, 2, 2, 1.5, 1.5, 1.5, 1.5};
+        crowded ? std::vector<double>{1, 6, 8, 4, 4, 3, 3, 1, 2, 2, 6, 6, 0.5, 2, 2, 4, 4, 4, 4, 3, 1}
+                : std::vector<double>{4, 4, 8, 4, 4, 5, 5, 4, 4, 4, 4, 4, 2, 2, 2, 1.5, 1.5, 1.5, 1.5, 3, 1};
     const int op = std::discrete_distribution<int>(weights.begin(), weights.end())(rng);
     switch (op) {
       case 0: {
@@ -1553,7 +1604,12 @@ struct Fuzzer {
       case 9: {
         last = "insert_particle";
         ParticleId a = any_particle(), b = any_particle();
-        if (!m.bars.items.empty() && chance(0.85)) {
+        if (!m.beam6s.items.empty() && chance(0.3)) {
+          const Beam6& el = m.beam6s[std::size_t(pick(int(m.beam6s.size())))];
+          a = el.i;
+          b = el.j;
+          if (chance(0.5)) std::swap(a, b);
+        } else if (!m.bars.items.empty() && chance(0.85)) {
           const Bar& bar = m.bars[std::size_t(pick(int(m.bars.size())))];
           a = bar.i;
           b = bar.j;
@@ -1588,6 +1644,18 @@ struct Fuzzer {
         const ParticleId p = any_particle();
         const bool passive = chance(0.3);
         return [this, p, passive] { m.set_passive(p, passive); };
+      }
+      case 19: {
+        last = "set_beam_formulation";
+        const BlockId b = any_block(BlockKind::Beam);
+        const int dofs = chance(0.05) ? 4 : (chance(0.5) ? 6 : 3);
+        return [this, b, dofs] { m.set_beam_formulation(b, dofs); };
+      }
+      case 20: {
+        last = "set_orientation";
+        const ParticleId p = any_particle();
+        const Quat q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+        return [this, p, q] { m.set_orientation(p, q); };
       }
       case 15:
       case 16: {
@@ -1641,11 +1709,18 @@ TEST_CASE("rebuild_elements after random operations gives the incrementally patc
       Model& m = f.m;
       const BarSet bars = bar_multiset(m);
       const HingeSet hinges = hinge_multiset(m);
+      const Beam6Set beam6s = beam6_multiset(m);
+      std::vector<ParticleId> rotating = m.particles.rotational;
+      std::sort(rotating.begin(), rotating.end());
       const std::vector<double> lumped = m.particles.lumped_mass;
       m.rebuild_elements();
       CHECK(m.check() == "");
       CHECK(bar_multiset(m) == bars);
       CHECK(hinge_multiset(m) == hinges);
+      CHECK(beam6_multiset(m) == beam6s);
+      std::vector<ParticleId> rebuilt = m.particles.rotational;
+      std::sort(rebuilt.begin(), rebuilt.end());
+      CHECK(rebuilt == rotating);
       for (ParticleId p = 0; p < m.particles.capacity(); ++p)
         if (m.particles.alive[p]) CHECK(m.particles.lumped_mass[p] == doctest::Approx(lumped[p]).epsilon(1e-12));
     }
@@ -1656,13 +1731,211 @@ TEST_CASE("rebuild_elements after random operations gives the incrementally patc
 
 TEST_CASE("3000 random valid and invalid operations keep every invariant") {
   Fuzzer f(20240607u);
+  std::size_t most_beam6s = 0, with_beam6s = 0;
   for (int k = 0; k < 3000; ++k) {
     CAPTURE(k);
     f.step();
+    most_beam6s = std::max(most_beam6s, f.m.beam6s.size());
+    with_beam6s += !f.m.beam6s.items.empty();
   }
+  MESSAGE("6-DOF elements present after ", with_beam6s, " of 3000 operations, at most ", most_beam6s);
+  CHECK(with_beam6s > 1000);
   MESSAGE("applied ", f.applied, ", refused ", f.refused, ", skipped (known bug) ", f.skipped, "; ",
-          f.m.particle_count(), " particles, ", f.m.block_count(), " blocks at the end");
+          f.m.particle_count(), " particles, ", f.m.block_count(), " blocks, ", f.m.beam6s.size(),
+          " 6-DOF elements, ", f.m.particles.rotational.size(), " rotating particles at the end");
   CHECK(f.applied > 1000);
   CHECK(f.refused > 300);
   CHECK(f.m.check() == "");
+}
+
+// --- 6-DOF beams (thesis 3.2.8.4, 5.5.2.1, appendix A) --------------------------------
+
+namespace {
+
+// The global orientation of the beam end stored at dart d, looking along its edge.
+Quat global_end(const Model& m, Dart d) {
+  return Quat(m.particles.orientation[m.dart_particle[d]] * m.beam_end[d]).normalized();
+}
+
+bool same_rotation(const Quat& a, const Quat& b, double tol = 1e-12) {
+  return std::abs(std::abs(a.dot(b)) - 1) < tol;
+}
+
+// Every dart of block b with its global beam end.
+std::vector<std::pair<Dart, Quat>> global_ends(const Model& m, BlockId b) {
+  std::vector<std::pair<Dart, Quat>> out;
+  for (Dart d : m.map.orbit(kComponentOrbit, m.blocks[b].dart)) out.emplace_back(d, global_end(m, d));
+  return out;
+}
+
+void expect_same_ends(const Model& m, const std::vector<std::pair<Dart, Quat>>& before) {
+  for (const auto& [d, q] : before) {
+    CAPTURE(d);
+    CHECK(same_rotation(global_end(m, d), q, 1e-12));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("6 DOF: set_beam_formulation swaps bars and hinges for Beam6 elements and back") {
+  Model m;
+  const auto ps = add_row(m, 5);
+  const BlockId b = m.add_beam(ps, beam_section(2.0));
+  const BlockId cable = m.add_cable(ps[0], m.add_particle(Vec3(0, 3, 0)), cable_section());
+  std::vector<ParticleId> grid;
+  for (int k = 0; k < 4; ++k) grid.push_back(m.add_particle(Vec3(k % 2, 5 + k / 2, 0)));
+  const BlockId patch = m.add_quad_grid(grid, 2, 2, cable_section());
+  const double lumped = m.particles.lumped_mass[ps[2]];
+  CHECK(m.beam_formulation(b) == 3);
+  m.set_beam_formulation(b, 6);
+  CHECK(m.check() == "");
+  CHECK(m.beam_formulation(b) == 6);
+  CHECK(m.bars.size() == 1 + 4);  // the cable's and the patch's
+  CHECK(m.hinges.size() == 0);
+  CHECK(m.beam6s.size() == 4);
+  CHECK(m.particles.rotational.size() == 5);
+  CHECK(m.particles.rot_degree[ps[0]] == 1);
+  CHECK(m.particles.rot_degree[ps[2]] == 2);
+  CHECK(m.particles.lumped_mass[ps[2]] == doctest::Approx(lumped));
+  CHECK(m.particles.rot_degree[grid[0]] == 0);
+
+  expect_refused(m, [&] { m.set_beam_formulation(cable, 6); }, "a cable");
+  expect_refused(m, [&] { m.set_beam_formulation(patch, 6); }, "a patch");
+  expect_refused(m, [&] { m.set_beam_formulation(b, 4); }, "4 DOF");
+  expect_refused(m, [&] { m.set_beam_formulation(99, 6); }, "no such block");
+  expect_refused(m, [&] { m.release_beam_prestress(cable); }, "release on a cable");
+  {
+    const Snapshot before(m);
+    m.set_beam_formulation(b, 6);  // already: nothing changes
+    CHECK(Snapshot(m).diff(before) == "");
+  }
+  m.set_beam_formulation(b, 3);
+  CHECK(m.check() == "");
+  CHECK(m.beam6s.size() == 0);
+  CHECK(m.hinges.size() == 3);
+  CHECK(m.bars.size() == 4 + 1 + 4);
+  CHECK(m.particles.rotational.size() == 0);
+  expect_refused(m, [&] { m.release_beam_prestress(b); }, "release on a 3-DOF beam");
+}
+
+TEST_CASE("6 DOF: node frames from the polyline by parallel transport, joints averaged (appendix A)") {
+  // A planar arc in z = 0 and a helix.
+  for (bool helix : {false, true}) {
+    CAPTURE(helix);
+    Model m;
+    std::vector<ParticleId> ps;
+    for (int k = 0; k <= 8; ++k) {
+      const double t = 0.3 * k;
+      ps.push_back(m.add_particle(Vec3(std::cos(t), std::sin(t), helix ? 0.2 * t : 0.0)));
+    }
+    const BlockId b = m.add_beam(ps, beam_section());
+    m.set_beam_formulation(b, 6);
+    REQUIRE(m.check() == "");
+    for (std::size_t k = 1; k + 1 < ps.size(); ++k) {
+      CAPTURE(k);
+      const Mat3 R = m.particles.orientation[ps[k]].toRotationMatrix();
+      const Vec3 t0 = (m.particles.position[ps[k]] - m.particles.position[ps[k - 1]]).normalized();
+      const Vec3 t1 = (m.particles.position[ps[k + 1]] - m.particles.position[ps[k]]).normalized();
+      CHECK((R.col(0) - (t0 + t1).normalized()).norm() < 1e-12);  // the joint's x bisects its chords
+      if (!helix) CHECK((R.col(2) - Vec3::UnitZ()).norm() < 1e-12);  // no twist invented in a plane
+      // Both beam ends at the joint are the node's frame: a straight joint.
+      for (Dart d : darts_at(m, ps[k])) {
+        const Quat e = global_end(m, d);
+        const Quat looking_forward = m.dart_particle[m.map.alpha(0, d)] == ps[k + 1] ? e : Quat(e * end_flip());
+        CHECK(same_rotation(looking_forward, m.particles.orientation[ps[k]]));
+      }
+    }
+    // Along the helix the frames are transported: the z axes of neighbouring
+    // joints differ by the turn of their tangents only (no twist about them).
+    for (std::size_t k = 1; k + 2 < ps.size(); ++k) {
+      const Mat3 A = m.particles.orientation[ps[k]].toRotationMatrix(), B = m.particles.orientation[ps[k + 1]].toRotationMatrix();
+      const Mat3 turn = Quat::FromTwoVectors(A.col(0), B.col(0)).toRotationMatrix();
+      CHECK((turn * A.col(2) - B.col(2)).norm() < 1e-2);
+    }
+  }
+}
+
+TEST_CASE("6 DOF: rule 13 puts the new node on the element's cubic with its frame") {
+  Model m;
+  const auto ps = add_row(m, 3);
+  const BlockId b = m.add_beam(ps, beam_section(1.0));
+  m.set_beam_formulation(b, 6);
+  SUBCASE("a straight element: the midpoint, the neighbours' frame, half rest lengths") {
+    const ParticleId q = m.insert_particle(ps[0], ps[1]);
+    CHECK(m.check() == "");
+    CHECK(same_vec(m.particles.position[q], Vec3(0.5, 0, 0)));
+    CHECK(same_rotation(m.particles.orientation[q], m.particles.orientation[ps[0]]));
+    CHECK(m.beam6s.size() == 3);
+    for (const Beam6& el : m.beam6s.items)
+      if (el.i == q || el.j == q) CHECK(el.rest_length == doctest::Approx(0.5));
+    CHECK(m.particles.lumped_mass[q] == doctest::Approx(0.5));
+    CHECK(m.particles.rot_degree[q] == 2);
+  }
+  SUBCASE("a bent element: the node sits off the chord by the sagitta l (theta_a - theta_b) / 8") {
+    // Turn the ends of the first element by +-0.1 about z: a circular arc.
+    m.set_orientation(ps[0], Quat(Eigen::AngleAxisd(0.1, Vec3::UnitZ())));
+    m.set_orientation(ps[1], Quat(Eigen::AngleAxisd(-0.1, Vec3::UnitZ())));
+    const ParticleId q = m.insert_particle(ps[1], ps[0]);  // either way round
+    CHECK(m.check() == "");
+    const Vec3 x = m.particles.position[q];
+    CHECK(x.x() == doctest::Approx(0.5));
+    CHECK(x.y() == doctest::Approx(std::sin(0.1) * 2 / 8).epsilon(1e-9));
+    // The arc's top is level (the frame looks along the edge it was split from).
+    CHECK(std::abs(m.particles.orientation[q].toRotationMatrix()(0, 0)) == doctest::Approx(1.0).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("6 DOF: rules 11, 3, 4, 5, 18 and 9 keep the beam ends where they were") {
+  Model m;
+  const auto a = add_row(m, 4), b = add_row(m, 4, Vec3(3, 0, 0.5));
+  const BlockId ba = m.add_beam(a, beam_section(1.0)), bb = m.add_beam(b, beam_section(1.0));
+  m.set_beam_formulation(ba, 6);
+  m.set_beam_formulation(bb, 6);
+  m.set_orientation(b[0], Quat(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized())));  // ends turn with it
+  // Rule 11 on an interior particle: the bridging element keeps the outer ends.
+  const Quat outer0 = global_end(m, darts_at(m, a[0])[0]);
+  m.remove_from_beam(a[1]);
+  CHECK(m.check() == "");
+  CHECK(same_rotation(global_end(m, darts_at(m, a[0])[0]), outer0));
+  CHECK(m.beam6s.size() == 5);
+  // Rule 3: merging a's tip with b's start re-expresses b's beam ends in the merged frame.
+  const auto ends_a = global_ends(m, ba), ends_b = global_ends(m, bb);
+  const ParticleId joint = m.merge({a.back(), b.front()});
+  CHECK(m.check() == "");
+  expect_same_ends(m, ends_a);
+  expect_same_ends(m, ends_b);
+  CHECK(m.particles.rot_degree[joint] == 2);
+  CHECK(m.state(joint) == State::Shared);
+  // Rule 4 and 5: copies take the frame, the beam ends stay.
+  const auto copies = m.explode(joint);
+  CHECK(m.check() == "");
+  expect_same_ends(m, ends_a);
+  expect_same_ends(m, ends_b);
+  for (ParticleId c : copies) CHECK(same_rotation(m.particles.orientation[c], m.particles.orientation[copies[0]]));
+  const ParticleId again = m.merge(copies);
+  const ParticleId split = m.explode_from(again, bb);
+  CHECK(m.check() == "");
+  expect_same_ends(m, ends_b);
+  CHECK(m.particles.rot_degree[split] == 1);
+  // Rule 9 on a 6-DOF beam, at its end and at its start: a straight joint.
+  const ParticleId far = m.add_particle(m.particles.position[b.back()] + Vec3(1, 0, 0));
+  m.extend_beam(bb, b.back(), far);
+  const ParticleId before = m.add_particle(m.particles.position[split] - Vec3(1, 0.2, 0));
+  m.extend_beam(bb, split, before);
+  CHECK(m.check() == "");
+  CHECK(m.particles.rot_degree[far] == 1);
+  CHECK(m.particles_of(bb).front() == before);
+  for (ParticleId p : {b.back(), split}) {
+    const auto ds = darts_at(m, p);
+    REQUIRE(ds.size() == 2);
+    CHECK(same_rotation(global_end(m, ds[0]) * end_flip(), global_end(m, ds[1])));
+  }
+  // Rule 18: deleting a 6-DOF beam takes its particles off the rotating list.
+  m.delete_beam(ba);
+  CHECK(m.check() == "");
+  CHECK(m.particles.rotational.size() == m.particles_of(bb).size());
+  const Beam6Set elements = beam6_multiset(m);
+  m.rebuild_elements();
+  CHECK(beam6_multiset(m) == elements);
+  CHECK(m.check() == "");
 }

@@ -26,7 +26,8 @@ std::string dump(Model& m) {
     for (int i = 0; i < 3; ++i) o << ' ' << m.map.alpha(i, d);
     const Model& c = m;
     o << ' ' << c.dart_particle[d] << ' ' << c.dart_block[d] << ' ' << c.dart_bar[d] << ' ' << c.dart_hinge[d] << ' '
-      << c.ring_next[d] << ' ' << c.ring_prev[d] << ' ' << c.rest_length[d] << '\n';
+      << c.ring_next[d] << ' ' << c.ring_prev[d] << ' ' << c.rest_length[d] << ' ' << c.dart_beam6[d] << ' '
+      << c.beam_end[d].coeffs().transpose() << '\n';
   }
   const Particles& P = m.particles;
   o << "particles " << P.capacity() << ' ' << P.live << '\n';
@@ -38,17 +39,25 @@ std::string dump(Model& m) {
     }
     for (const Vec3* v : {&P.position[p], &P.velocity[p], &P.load[p]}) o << ' ' << v->transpose();
     o << ' ' << P.point_mass[p] << ' ' << P.lumped_mass[p] << ' ' << int(P.lock[p]) << ' ' << int(P.passive[p]) << ' '
-      << int(P.active[p]) << ' ' << P.first_dart[p] << ' ' << P.degree[p] << '\n';
+      << int(P.active[p]) << ' ' << P.first_dart[p] << ' ' << P.degree[p];
+    for (const Vec3* v : {&P.angular_velocity[p], &P.moment[p]}) o << ' ' << v->transpose();
+    o << ' ' << P.orientation[p].coeffs().transpose() << ' ' << P.rot_degree[p] << ' ' << P.rotational_slot[p] << '\n';
   }
+  o << "rotating";
+  for (ParticleId p : P.rotational) o << ' ' << p;
+  o << '\n';
   o << "free";
   for (ParticleId p : P.free_slots) o << ' ' << p;
   o << "\nblocks " << m.blocks.size() << ' ' << m.block_count() << '\n';
   for (const Block& b : m.blocks)
-    o << int(b.kind) << ' ' << b.closed << ' ' << b.section.EA << ' ' << b.section.EI << ' ' << b.dart << ' '
-      << b.darts << ' ' << b.alive << ' ' << b.generation << '\n';
+    o << int(b.kind) << ' ' << b.closed << ' ' << int(b.dofs) << ' ' << b.section.EA << ' ' << b.section.EI << ' '
+      << b.section.GJ << ' ' << b.dart << ' ' << b.darts << ' ' << b.alive << ' ' << b.generation << '\n';
   for (const Bar& b : m.bars.items)
     o << "bar " << b.i << ' ' << b.j << ' ' << b.rest_length << ' ' << b.EA << ' ' << b.dart << '\n';
   for (const Hinge& h : m.hinges.items) o << "hinge " << h.i << ' ' << h.j << ' ' << h.k << ' ' << h.dart << '\n';
+  for (const Beam6& b : m.beam6s.items)
+    o << "beam6 " << b.i << ' ' << b.j << ' ' << b.end_i.coeffs().transpose() << ' ' << b.end_j.coeffs().transpose()
+      << ' ' << b.rest_length << ' ' << b.GJ << ' ' << b.dart << '\n';
   return o.str();
 }
 
@@ -65,6 +74,8 @@ struct Scene {
     m.add_cable(ps[0], ps[8], Section{1e4, 0, 5, 0.1});
     m.add_cable(ps[9], ps[17], Section{1e4, 0, 5, 0.1});
     m.set_lock(ps[0], kLockTranslation);
+    m.set_beam_formulation(1, 6);  // the second row and the ring rotate
+    m.set_beam_formulation(3, 6);
   }
   // One random primitive operation; invalid ones throw and change nothing.
   void random_op(std::mt19937& rng) {
@@ -75,7 +86,7 @@ struct Scene {
       return live[rng() % live.size()];
     };
     try {
-      switch (rng() % 9) {
+      switch (rng() % 11) {
         case 0: m.insert_particle(any(), any()); break;
         case 1: m.remove_from_beam(any()); break;
         case 2: m.merge({any(), any()}); break;
@@ -91,6 +102,12 @@ struct Scene {
           else m.delete_beam(b);
           break;
         }
+        case 9: {
+          auto bs = m.live_blocks();
+          m.set_beam_formulation(bs[rng() % bs.size()], rng() % 2 ? 6 : 3);
+          break;
+        }
+        case 10: m.set_orientation(any(), Quat(0.5, 0.5, 0.5, 0.5)); break;
       }
     } catch (const ModelError&) {
     }
@@ -154,4 +171,38 @@ TEST_CASE("the undo log of one rule 13 does not grow with the model") {
   const std::size_t small = entries(10), large = entries(10000);
   CHECK(small > 0);
   CHECK(large <= small + 4);  // vector growth may log a few more lengths
+}
+
+TEST_CASE("the undo log of a formulation switch and of rule 13 on a 6-DOF beam does not grow with the model") {
+  auto entries = [](int beams, bool insert) {
+    Model m;
+    std::vector<ParticleId> first;
+    std::vector<BlockId> ids;
+    for (int b = 0; b < beams; ++b) {
+      std::vector<ParticleId> row;
+      for (int i = 0; i < 10; ++i) row.push_back(m.add_particle(Vec3(i, b, 0)));
+      ids.push_back(m.add_beam(row, Section{1e6, 10, 0, 0}));
+      if (b % 2) m.set_beam_formulation(ids.back(), 6);  // half the model rotates
+      first.push_back(row[4]);
+    }
+    const BlockId target = ids[2 * (ids.size() / 4) + 1];  // a 6-DOF beam
+    m.begin_transaction();
+    if (insert) {
+      const auto ps = m.particles_of(target);
+      m.insert_particle(ps[4], ps[5]);
+    } else {
+      m.set_beam_formulation(target, 3);
+      m.set_beam_formulation(target, 6);
+    }
+    std::size_t n = m.map.undo_log().size();
+    m.rollback_transaction();
+    CHECK(m.check() == "");
+    return n;
+  };
+  for (bool insert : {false, true}) {
+    CAPTURE(insert);
+    const std::size_t small = entries(10, insert), large = entries(4000, insert);
+    CHECK(small > 0);
+    CHECK(large <= small + 8);  // vector growth may log a few more lengths
+  }
 }
