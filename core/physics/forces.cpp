@@ -78,7 +78,11 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
     K[p] = 0;
   }
   const double gf = settings.geometric_factor;
+  // Elements whose particles are all passive (multi-resolution, thesis
+  // 5.5.2.3) are skipped: they move nothing that is integrated.
+  const std::uint8_t* active = P.active.data();
   for (const Bar& b : model_.bars.items) {
+    if (!(active[b.i] | active[b.j])) continue;
     const Vec3 d = x[b.j] - x[b.i];
     const double L = d.norm();
     const double k = b.EA / b.rest_length;
@@ -94,6 +98,7 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
     S[b.j] += s;
   }
   for (const Hinge& h : model_.hinges.items) {
+    if (!(active[h.i] | active[h.j] | active[h.k])) continue;
     const Vec3 a = x[h.j] - x[h.i], b = x[h.k] - x[h.j];
     const double La = a.norm(), Lb = b.norm(), Lc = (x[h.k] - x[h.i]).norm();
     const double ka = 4 * h.EI / (La * La * La), kb = 4 * h.EI / (Lb * Lb * Lb);  // eq. 3.43
@@ -112,7 +117,8 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
     F[h.k] += fk;
     F[h.j] -= fi + fk;
   }
-  for (const Beam6& b : model_.beam6s.items) beam6_forces(b, x, q, F, T, S, K, gf);
+  for (const Beam6& b : model_.beam6s.items)
+    if (active[b.i] | active[b.j]) beam6_forces(b, x, q, F, T, S, K, gf);
 }
 
 }  // namespace tendril
