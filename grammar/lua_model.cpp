@@ -404,7 +404,7 @@ int l_delete(lua_State* L) {
   switch (s.model.blocks[b].kind) {
     case BlockKind::Cable: s.model.delete_cable(b); break;
     case BlockKind::Beam: s.model.delete_beam(b); break;
-    case BlockKind::Patch: throw LuaArgError("delete: deleting patches comes with the meshing layer (rule 27)");
+    case BlockKind::Patch: s.model.delete_patch(b); break;  // rule 27
   }
   s.record("delete " + std::to_string(b));
   record.done();
@@ -421,6 +421,28 @@ int l_insert(lua_State* L) {
   return 1;
 }
 
+// Rule 23: a simple particle of a patch and its quads; the rest may split.
+int l_remove_from_patch(lua_State* L) {
+  Scene& s = check_scene(L, "remove_from_patch");
+  JournalScope record(s, "remove_from_patch", describe_args(L, 2, lua_gettop(L)));
+  const ParticleId p = check_particle(L, 2, s, "remove_from_patch");
+  s.model.remove_from_patch(p);
+  s.record("remove_from_patch " + std::to_string(p));
+  record.done();
+  return 0;
+}
+
+// Rule 26: sews patch b onto patch a along their common boundary edges.
+int l_merge_patches(lua_State* L) {
+  Scene& s = check_scene(L, "merge_patches");
+  JournalScope record(s, "merge_patches", describe_args(L, 2, lua_gettop(L)));
+  const BlockId a = check_block(L, 2, s, "merge_patches"), b = check_block(L, 3, s, "merge_patches");
+  push_block(L, s, s.model.merge_patches(a, b));
+  s.record("merge_patches " + std::to_string(a) + " " + std::to_string(b));
+  record.done();
+  return 1;
+}
+
 int l_remove_from_beam(lua_State* L) {
   Scene& s = check_scene(L, "remove_from_beam");
   JournalScope record(s, "remove_from_beam", describe_args(L, 2, lua_gettop(L)));
@@ -428,6 +450,32 @@ int l_remove_from_beam(lua_State* L) {
   s.model.remove_from_beam(p);
   s.record("remove_from_beam " + std::to_string(p));
   record.done();
+  return 0;
+}
+
+int l_split(lua_State* L) {
+  Scene& s = check_scene(L, "split");
+  JournalScope record(s, "split", describe_args(L, 2, lua_gettop(L)));
+  const BlockId b = check_block(L, 2, s, "split");
+  const ParticleId p = check_particle(L, 3, s, "split");
+  const auto [q, nb] = s.model.split_beam(b, p);
+  push_particle(L, s, q);
+  push_block(L, s, nb);
+  s.record("split " + std::to_string(b) + " " + std::to_string(p));
+  record.done();
+  return 2;
+}
+
+int l_rest_length(lua_State* L) {
+  Scene& s = check_scene(L, "rest_length");
+  const ParticleId a = check_particle(L, 2, s, "rest_length"), b = check_particle(L, 3, s, "rest_length");
+  if (lua_isnoneornil(L, 4)) {
+    lua_pushnumber(L, s.model.edge_rest_length(a, b));
+    return 1;
+  }
+  const double length = check_number(L, 4, "rest_length");
+  s.model.set_rest_length(a, b, length);
+  s.record("rest_length " + std::to_string(a) + " " + std::to_string(b) + " " + Trace::number(length));
   return 0;
 }
 
@@ -869,6 +917,10 @@ void register_model_meta(lua_State* L) {
   set_fn<l_delete>(L, "delete");
   set_fn<l_insert>(L, "insert");
   set_fn<l_remove_from_beam>(L, "remove_from_beam");
+  set_fn<l_remove_from_patch>(L, "remove_from_patch");
+  set_fn<l_merge_patches>(L, "merge_patches");
+  set_fn<l_split>(L, "split");
+  set_fn<l_rest_length>(L, "rest_length");
   set_fn<l_lock>(L, "lock");
   set_fn<l_unlock>(L, "unlock");
   set_fn<l_locks>(L, "locks");

@@ -158,12 +158,23 @@ void replay_trace(std::istream& in, const std::string& name, Model& m, Solver& s
         BlockId b = r.id();
         m.require_block(b, "delete");
         if (m.blocks[b].kind == BlockKind::Cable) m.delete_cable(b);
+        else if (m.blocks[b].kind == BlockKind::Patch) m.delete_patch(b);
         else m.delete_beam(b);
       } else if (op == "insert") {
         ParticleId a = r.id();
         m.insert_particle(a, r.id());
+      } else if (op == "split") {
+        BlockId b = r.id();
+        m.split_beam(b, r.id());
+      } else if (op == "rest_length") {
+        ParticleId a = r.id(), b = r.id();
+        m.set_rest_length(a, b, r.number());
       } else if (op == "remove_from_beam") m.remove_from_beam(r.id());
-      else if (op == "lock") {
+      else if (op == "remove_from_patch") m.remove_from_patch(r.id());
+      else if (op == "merge_patches") {
+        const BlockId a = r.id();
+        m.merge_patches(a, r.id());
+      } else if (op == "lock") {
         ParticleId p = r.id();
         m.set_lock(p, std::uint8_t(r.number()));
       } else if (op == "role") {

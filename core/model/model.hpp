@@ -6,6 +6,7 @@
 // them from the map and exists to check that claim (and to measure it).
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/elements.hpp"
@@ -64,6 +65,16 @@ class Model {
   // Rule 9: grows an open beam by one segment from its end particle `end` to
   // the particle `p` (rest length: their distance). extend.cpp.
   void extend_beam(BlockId b, ParticleId end, ParticleId p);
+  // Rule 16 (split.cpp): breaks beam b at its interior particle p, on b alone
+  // (not passive). A new particle q (same position, velocity, locks, frame)
+  // takes the part after p in path order: a new open beam with b's section
+  // and formulation, or, for a ring, the ring opens into one open beam that
+  // starts at q and ends at p (the block returned is b). p's hinge goes.
+  std::pair<ParticleId, BlockId> split_beam(BlockId b, ParticleId p);
+  // The rest length of the beam (else cable) edge between consecutive
+  // particles a and b: column, element and lumped masses. O(degree).
+  void set_rest_length(ParticleId a, ParticleId b, double length);
+  double edge_rest_length(ParticleId a, ParticleId b) const;
   ParticleId insert_particle(ParticleId a, ParticleId b);  // rule 13
   void remove_from_beam(ParticleId p);                     // rule 11
   void delete_beam(BlockId b);                              // rule 18
@@ -94,6 +105,9 @@ class Model {
   // piece with every edge in at most two quads. Used by the meshing layer.
   using Quad = std::array<ParticleId, 4>;
   BlockId add_patch(const std::vector<Quad>& quads, const Section& s);
+  void delete_patch(BlockId b);                   // rule 27: darts, bars, isolated particles (patch_ops.cpp)
+  void remove_from_patch(ParticleId p);           // rule 23: a simple particle and its quads; splits the rest
+  BlockId merge_patches(BlockId a, BlockId b);    // rule 26: sews b onto a along common boundary edges; returns a
 
   // --- constraints and loads --------------------------------------------
   void set_lock(ParticleId p, std::uint8_t bits);

@@ -144,6 +144,41 @@ define("unsubdivide", "rule 15: inverse subdivision of a spline beam",
     for i = 2, #ps - 1, 2 do m:remove_from_beam(ps[i]) end
   end)
 
+define("break_simple", "rule 16: break a spline beam on a simple particle",
+  function(m, beam, p)
+    local ok, why = kind_is(m, beam, "beam")
+    if not ok then return false, why end
+    ok, why = state_is(m, p, "simple")
+    if not ok then return false, why end
+    local ps = m:particles(beam)
+    for i, x in ipairs(ps) do
+      if x == p then
+        return m:closed(beam) or (i > 1 and i < #ps), string.format("particle %d is an end of beam %d", p.id, beam.id)
+      end
+    end
+    return false, string.format("particle %d is not on beam %d", p.id, beam.id)
+  end,
+  function(m, beam, p) return m:split(beam, p) end)
+
+define("break_shared", "rule 17: break a spline beam on a shared particle",
+  function(m, beam, p)
+    local ok, why = kind_is(m, beam, "beam")
+    if not ok then return false, why end
+    ok, why = state_is(m, p, "shared")
+    if not ok then return false, why end
+    local ps = m:particles(beam)
+    for i, x in ipairs(ps) do
+      if x == p then
+        return m:closed(beam) or (i > 1 and i < #ps), string.format("particle %d is an end of beam %d", p.id, beam.id)
+      end
+    end
+    return false, string.format("particle %d is not on beam %d", p.id, beam.id)
+  end,
+  function(m, beam, p)
+    local copy = m:explode_from(p, beam)   -- rule 5, then rule 16 at the beam's copy
+    return m:split(beam, copy)
+  end)
+
 define("delete_beam", "rule 18: delete a spline beam",
   function(m, beam) return kind_is(m, beam, "beam") end,
   function(m, beam) m:delete(beam) end)
@@ -220,7 +255,7 @@ define("patch_projection", "rule 21: a tensile patch between two particle sequen
   function(m, options) return m:project(options) end)
 
 -- Rule 22 builds the tube between two rings; cutting the rings out of two
--- patches' interiors first needs patch deletion (rules 23, 27) in the model.
+-- patches' interiors first is patch_remove_simple / patch_remove_shared.
 define("patch_tube", "rule 22: a tube of quads between two rings of particles",
   function(m, options) return two_sequences(options, 3) end,
   function(m, options)
@@ -230,10 +265,63 @@ define("patch_tube", "rule 22: a tube of quads between two rings of particles",
     return m:project(tube)
   end)
 
--- The old patch stays until the model can delete patches (rule 27).
+-- The finer patch reuses every particle of the old one, which goes (rule 27).
 define("patch_refine", "rule 25: subdivide a tensile patch by Catmull-Clark",
   function(m, patch) return kind_is(m, patch, "patch") end,
-  function(m, patch, section) return m:subdivide_patch(patch, section) end)
+  function(m, patch, section)
+    local finer = m:subdivide_patch(patch, section)
+    m:delete(patch)
+    return finer
+  end)
+
+local function on_patch(m, p)
+  for _, b in ipairs(m:blocks(p)) do
+    if m:kind(b) == "patch" then return b end
+  end
+end
+
+define("patch_remove_simple", "rule 23: delete a simple particle of a tensile patch and its quads",
+  function(m, p)
+    local ok, why = state_is(m, p, "simple")
+    if not ok then return false, why end
+    return on_patch(m, p) ~= nil, string.format("particle %d is not on a patch", p.id)
+  end,
+  function(m, p) m:remove_from_patch(p) end)
+
+define("patch_remove_shared", "rule 24: delete a shared particle of a tensile patch",
+  function(m, p, patch)
+    local ok, why = state_is(m, p, "shared")
+    if not ok then return false, why end
+    ok, why = kind_is(m, patch, "patch")
+    if not ok then return false, why end
+    for _, b in ipairs(m:blocks(p)) do
+      if b == patch then return true end
+    end
+    return false, string.format("particle %d is not on patch %d", p.id, patch.id)
+  end,
+  function(m, p, patch)
+    local q = m:explode_from(p, patch)   -- rule 5, then rule 23 on the patch's copy
+    m:remove_from_patch(q)
+  end)
+
+define("patch_merge", "rule 26: merge two tensile patches along their common particles",
+  function(m, a, b)
+    local ok, why = kind_is(m, a, "patch")
+    if not ok then return false, why end
+    ok, why = kind_is(m, b, "patch")
+    if not ok then return false, why end
+    local mine = {}
+    for _, p in ipairs(m:particles(a)) do mine[p.id] = true end
+    for _, p in ipairs(m:particles(b)) do
+      if mine[p.id] then return true end
+    end
+    return false, string.format("patches %d and %d share no particle", a.id, b.id)
+  end,
+  function(m, a, b) return m:merge_patches(a, b) end)
+
+define("patch_delete", "rule 27: delete a tensile patch",
+  function(m, patch) return kind_is(m, patch, "patch") end,
+  function(m, patch) m:delete(patch) end)
 
 tendril.rules = rules
 

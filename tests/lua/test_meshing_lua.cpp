@@ -84,7 +84,7 @@ assert(ok and #m:particles(finer) == 81)
 local top = m:particles(ring(m, 24, 1.5, 0, 2))
 local tube = m:project{ from = ps, to = top, rows = 2, closed = true, EA = 500 }
 m:step(25)
-assert(m:count().patches == 4)
+assert(m:count().patches == 3)   -- patch_refine deleted cc (rule 27)
 m:check()
 m:save(tendril.out("paving_live.xml"))
 m:save_journal(tendril.out("paving_journal.txt"))
@@ -101,7 +101,8 @@ m:save_journal(tendril.out("paving_journal.txt"))
   CHECK(lines.find("\nposition ") != std::string::npos);  // rule 25 moved the sagged interior
   CHECK(lines.find("\npatch ") != std::string::npos);
   CHECK(model_xml_string(model, solver.settings) == live);
-  CHECK(model.block_count(BlockKind::Patch) == 4);
+  CHECK(lines.find("\ndelete ") != std::string::npos);  // patch_refine deleted the old patch
+  CHECK(model.block_count(BlockKind::Patch) == 3);
 
   // The model database holds any patch: load, save, same bytes.
   Model loaded;
@@ -189,10 +190,10 @@ for _, tri in ipairs(t.triangles) do assert(axis(tri) == axis(t.triangles[1])) e
 t = m:triangulation(paved, { warp = { 0, 1, 0 } })
 assert(axis(t.triangles[1]) == "y")
 
--- rule 25: one Catmull-Clark step; the old patch stays
+-- rule 25: one Catmull-Clark step; the old patch goes (rule 27)
 local before = m:count().patches
 local ok, finer = m:apply(R.patch_refine, paved)
-assert(ok and m:quality(finer).quads == 64 and m:count().patches == before + 1)
+assert(ok and m:quality(finer).quads == 64 and m:count().patches == before)
 
 -- rule 19 on a triangle: 3 quads, then 12 with a level more
 local tri = { m:particle{ 10, 0, 0 }, m:particle{ 12, 0, 0 }, m:particle{ 11, 2, 0 } }
@@ -233,4 +234,47 @@ assert(m:count().particles == n)
 m:check()
 )lua");
   CHECK(error == "");
+}
+
+TEST_CASE("patch rules 23, 24, 26 and 27 from Lua replay bit for bit from the journal") {
+  const std::string error = run("replay_patch_ops.lua", R"lua(
+local m = tendril.model()
+local R = tendril.rules
+local g = {}
+for r = 0, 2 do for c = 0, 4 do g[r * 5 + c + 1] = m:particle{ c, r, 0.1 * c * r } end end
+local function cells(c0, c1)
+  local ps = {}
+  for r = 0, 2 do for c = c0, c1 do ps[#ps + 1] = g[r * 5 + c + 1] end end
+  return m:quad_grid{ particles = ps, rows = 3, cols = c1 - c0 + 1, EA = 1e3, prestress = 5 }
+end
+local a, b = cells(0, 2), cells(2, 4)
+assert(m:merge_patches(a, b) == a and m:count().patches == 1)
+local ok, why = pcall(m.merge_patches, m, a, a)
+assert(not ok and why:find("both arguments", 1, true), why)
+m:remove_from_patch(g[1])
+local anchor = m:particle{ 2, 1, 2 }
+m:cable(anchor, g[8], { EA = 1e4 })
+assert(m:apply(R.patch_remove_shared, g[8], a))
+assert(m:count().patches == 2)
+m:lock(g[5], "xyz"); m:lock(g[15], "xyz"); m:lock(g[11], "xyz"); m:lock(anchor, "xyz")
+m:step(20)
+assert(m:apply(R.patch_delete, m:blocks(g[6])[1]))
+m:step(5)
+assert(m:count().patches == 1)
+m:check()
+m:save(tendril.out("patch_ops_live.xml"))
+m:save_journal(tendril.out("patch_ops_journal.txt"))
+)lua");
+  REQUIRE(error == "");
+  Model model;
+  Solver solver(model);
+  std::ifstream journal(work_dir() / "patch_ops_journal.txt");
+  replay_trace(journal, "patch_ops_journal.txt", model, solver);
+  CHECK(model.check() == "");
+  const std::string lines = slurp(work_dir() / "patch_ops_journal.txt");
+  CHECK(lines.find("\nmerge_patches ") != std::string::npos);
+  CHECK(lines.find("\nremove_from_patch ") != std::string::npos);
+  CHECK(lines.find("\ndelete ") != std::string::npos);
+  CHECK(model_xml_string(model, solver.settings) == slurp(work_dir() / "patch_ops_live.xml"));
+  CHECK(model.block_count(BlockKind::Patch) == 1);
 }
