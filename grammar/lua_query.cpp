@@ -89,6 +89,53 @@ int l_summary(lua_State* L) {
   return 1;
 }
 
+// m:joint(p, {angle =, stiffness =}): a rotational joint at the crossing p
+// (thesis 6.5.2); returns its index. angle: the target included angle
+// [deg] between the two beams (default: the current one).
+int l_joint(lua_State* L) {
+  const char* fn = "joint";
+  Scene& s = check_scene(L, fn);
+  const ParticleId p = check_particle(L, 2, s, fn);
+  check_table(L, 3, fn);
+  check_keys(L, 3, fn, {"angle", "stiffness"});
+  ParticleId n[4];
+  if (!s.model.joint_neighbours(p, n)) arg_error(fn, 2, "the particle is not an interior crossing of exactly two beams");
+  const Vec3* x = s.model.particles.position.data();
+  const Vec3 ta = x[n[1]] - x[n[0]], tb = x[n[3]] - x[n[2]];
+  const double current = std::atan2(ta.cross(tb).norm(), ta.dot(tb));
+  const double angle = has_field(L, 3, "angle") ? field_number(L, 3, "angle", fn, 0) * M_PI / 180 : current;
+  if (!has_field(L, 3, "stiffness")) key_error(fn, "stiffness", "is required [N/m]");
+  const double k = field_number(L, 3, "stiffness", fn, 0);
+  const std::size_t id = s.model.add_joint(p, angle, k);
+  s.record("joint " + std::to_string(p) + " " + Trace::number(angle) + " " + Trace::number(k));
+  lua_pushinteger(L, lua_Integer(id + 1));
+  return 1;
+}
+
+// m:joint_angle(j): the joint's current included angle [deg];
+// m:joint_angle(j, deg): sets its target (a value per step, as a sensor sends it).
+int l_joint_angle(lua_State* L) {
+  const char* fn = "joint_angle";
+  Scene& s = check_scene(L, fn);
+  const std::int64_t j = check_integer(L, 2, fn) - 1;
+  if (j < 0 || std::size_t(j) >= s.model.joints.size()) arg_error(fn, 2, "no such joint");
+  if (lua_isnoneornil(L, 3)) {
+    ParticleId n[4];
+    if (!s.model.joint_neighbours(s.model.joints[std::size_t(j)].particle, n)) {
+      lua_pushnil(L);
+      return 1;
+    }
+    const Vec3* x = s.model.particles.position.data();
+    const Vec3 ta = x[n[1]] - x[n[0]], tb = x[n[3]] - x[n[2]];
+    lua_pushnumber(L, std::atan2(ta.cross(tb).norm(), ta.dot(tb)) * 180 / M_PI);
+    return 1;
+  }
+  const double angle = check_number(L, 3, fn) * M_PI / 180;
+  s.model.set_joint_angle(std::size_t(j), angle);
+  s.record("joint_angle " + std::to_string(j) + " " + Trace::number(angle));
+  return 0;
+}
+
 template <lua_CFunction F>
 void set_fn(lua_State* L, const char* name) {
   lua_pushcfunction(L, guarded<F>);
@@ -101,6 +148,8 @@ void add_query_methods(lua_State* L) {
   set_fn<l_neighbours>(L, "neighbours");
   set_fn<l_extend>(L, "extend");
   set_fn<l_summary>(L, "summary");
+  set_fn<l_joint>(L, "joint");
+  set_fn<l_joint_angle>(L, "joint_angle");
 }
 
 }  // namespace tendril::lua

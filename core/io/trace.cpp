@@ -148,6 +148,13 @@ void replay_trace(std::istream& in, const std::string& name, Model& m, Solver& s
       } else if (op == "torque") {
         ParticleId p = r.id();
         m.set_moment(p, r.vec());
+      } else if (op == "joint") {
+        ParticleId p = r.id();
+        const double angle = r.number();
+        m.add_joint(p, angle, r.number());
+      } else if (op == "joint_angle") {
+        std::size_t j = r.id();
+        m.set_joint_angle(j, r.number());
       } else if (op == "delete_particle") m.delete_particle(r.id());
       else if (op == "merge") m.merge(r.rest());
       else if (op == "explode") m.explode(r.id());

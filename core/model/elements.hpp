@@ -44,6 +44,15 @@ struct Beam6 {
   std::uint32_t dart;  // a dart of the edge, embedding i
 };
 
+// Rotational joint of an adaptive structure (thesis 6.5.2, fig. 6.32) at a
+// particle shared by two beams crossing there. Its four neighbours are read
+// from the map at every evaluation, so rules may rewrite the beams around it.
+struct RotationalJoint {
+  ParticleId particle;
+  double angle;      // target included angle between the two beams [rad]
+  double stiffness;  // fictitious stiffness of the projections [N/m]
+};
+
 template <class E>
 struct ElementBuffer {
   LoggedVector<E> items;

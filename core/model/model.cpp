@@ -26,6 +26,7 @@ Model::Model()
   bars.items.attach(log);
   hinges.items.attach(log);
   beam6s.items.attach(log);
+  joints.items.attach(log);
 }
 
 void Model::require_particle(ParticleId p, const char* what) const {

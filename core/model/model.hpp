@@ -115,6 +115,13 @@ class Model {
   void set_load(ParticleId p, const Vec3& f);
   void set_point_mass(ParticleId p, double kg);
   void set_role(ParticleId p, Role r);
+  // Rotational joints (thesis 6.5.2): at a particle where exactly two beams
+  // cross (four neighbours), drive the angle between them. joints.cpp.
+  std::size_t add_joint(ParticleId p, double angle, double stiffness);
+  void set_joint_angle(std::size_t joint, double angle);
+  // The four neighbours (a1, a2 on one beam, b1, b2 on the other), or false
+  // when the particle is not a crossing of two beams any more.
+  bool joint_neighbours(ParticleId p, ParticleId out[4]) const;
   // The node frame of p; on a 6-DOF beam its beam ends turn with it. Must be
   // a rotation (normalised here).
   void set_orientation(ParticleId p, const Quat& q);
@@ -162,6 +169,7 @@ class Model {
   ElementBuffer<Bar> bars;
   ElementBuffer<Hinge> hinges;
   ElementBuffer<Beam6> beam6s;
+  ElementBuffer<RotationalJoint> joints;  // joints.cpp
 
   // Per-dart columns: 0-embedding, owning block, element references, and the
   // ring of darts embedding the same particle.
