@@ -17,6 +17,7 @@ local defaults = {
   separation = 0.5,     -- m: parents closer than this push apart
   weights = { seek = 1.0, avoid = 3.0, separation = 1.5, alignment = 0.5, cohesion = 0.3 },
   spacing = 0.25,       -- m between children
+  every = 0,            -- steps between children instead (when > 0)
   children = 20,        -- per parent (option name; stored as per_parent)
   reach = 0.3,          -- m: a target this close counts as reached
   tether = { EA = 1e4 },
@@ -147,7 +148,10 @@ function Flock:step()
       a.velocity = vec.limit(vec.add(a.velocity, forces[i]), self.max_speed)
       m:set_position(a.particle, vec.add(m:position(a.particle), a.velocity))
       a.travelled = a.travelled + vec.length(a.velocity)
-      if #a.children == 0 or a.travelled >= self.spacing then
+      a.steps = (a.steps or 0) + 1
+      local due = self.every > 0 and a.steps >= self.every or self.every <= 0 and a.travelled >= self.spacing
+      if #a.children == 0 or due then
+        a.steps = 0
         a.travelled = 0
         self:drop(a)
       end
