@@ -144,19 +144,24 @@ define("unsubdivide", "rule 15: inverse subdivision of a spline beam",
     for i = 2, #ps - 1, 2 do m:remove_from_beam(ps[i]) end
   end)
 
+-- Whether p is a particle of the beam where it can break (not an open end).
+local function interior_of(m, beam, p)
+  local ps = m:particles(beam)
+  for i, x in ipairs(ps) do
+    if x == p then
+      return m:closed(beam) or (i > 1 and i < #ps), string.format("particle %d is an end of beam %d", p.id, beam.id)
+    end
+  end
+  return false, string.format("particle %d is not on beam %d", p.id, beam.id)
+end
+
 define("break_simple", "rule 16: break a spline beam on a simple particle",
   function(m, beam, p)
     local ok, why = kind_is(m, beam, "beam")
     if not ok then return false, why end
     ok, why = state_is(m, p, "simple")
     if not ok then return false, why end
-    local ps = m:particles(beam)
-    for i, x in ipairs(ps) do
-      if x == p then
-        return m:closed(beam) or (i > 1 and i < #ps), string.format("particle %d is an end of beam %d", p.id, beam.id)
-      end
-    end
-    return false, string.format("particle %d is not on beam %d", p.id, beam.id)
+    return interior_of(m, beam, p)
   end,
   function(m, beam, p) return m:split(beam, p) end)
 
@@ -166,13 +171,7 @@ define("break_shared", "rule 17: break a spline beam on a shared particle",
     if not ok then return false, why end
     ok, why = state_is(m, p, "shared")
     if not ok then return false, why end
-    local ps = m:particles(beam)
-    for i, x in ipairs(ps) do
-      if x == p then
-        return m:closed(beam) or (i > 1 and i < #ps), string.format("particle %d is an end of beam %d", p.id, beam.id)
-      end
-    end
-    return false, string.format("particle %d is not on beam %d", p.id, beam.id)
+    return interior_of(m, beam, p)
   end,
   function(m, beam, p)
     local copy = m:explode_from(p, beam)   -- rule 5, then rule 16 at the beam's copy
