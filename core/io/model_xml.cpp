@@ -388,6 +388,17 @@ std::string write_document(const Model& m, const SolverSettings& s) {
     ++id;
   }
   w.close();
+  if (!m.joints.items.empty()) {  // rotational joints (thesis 6.5.2)
+    w.open("joints");
+    for (const RotationalJoint& j : m.joints.items) {
+      w.open("joint");
+      w.attr("particle", dense[j.particle]);
+      w.attr("angle", j.angle);
+      w.attr("stiffness", j.stiffness);
+      w.close();
+    }
+    w.close();
+  }
   w.close();
   return std::string(out.CStr(), std::size_t(out.CStrSize() - 1));
 }
@@ -424,11 +435,18 @@ struct BlockRecord {
   const tinyxml2::XMLElement* element = nullptr;
 };
 
+struct JointRecord {
+  unsigned particle = 0;
+  double angle = 0, stiffness = 0;
+  const tinyxml2::XMLElement* element = nullptr;
+};
+
 struct Document {
   SolverSettings settings;
   Vec3 gravity = Vec3::Zero();
   std::vector<ParticleRecord> particles;  // ascending id
   std::vector<BlockRecord> blocks;        // ascending id
+  std::vector<JointRecord> joints;        // in file order
 };
 
 class Attributes;
@@ -850,7 +868,7 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
   std::map<unsigned, const tinyxml2::XMLElement*> particle_ids, block_ids;
   for (const tinyxml2::XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
     const std::string name = e->Name();
-    if (name != "solver" && name != "gravity" && name != "particles" && name != "blocks")
+    if (name != "solver" && name != "gravity" && name != "particles" && name != "blocks" && name != "joints")
       fail(e, "unknown element <" + name + "> inside <tendril>");
     if (auto it = sections.find(name); it != sections.end())
       fail(e, "<" + name + "> is already given on line " + std::to_string(it->second->GetLineNum()));
@@ -862,6 +880,22 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
       d.gravity = Vec3(a.real("x"), a.real("y"), a.real("z"));
       a.done();
       no_children(e);
+    } else if (name == "joints") {
+      Attributes(*this, e).done();
+      for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+        if (std::strcmp(c->Name(), "joint") != 0)
+          fail(c, std::string("unknown element <") + c->Name() + "> inside <joints>");
+        Attributes a(*this, c);
+        JointRecord j;
+        j.element = c;
+        j.particle = a.index("particle");
+        j.angle = a.real("angle");
+        j.stiffness = a.real("stiffness");
+        if (!(j.stiffness > 0)) a.bad("stiffness", "must be > 0");
+        a.done();
+        no_children(c);
+        d.joints.push_back(j);
+      }
     } else if (name == "particles") {
       Attributes(*this, e).done();
       for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
@@ -962,6 +996,15 @@ void build(const Reader& reader, const Document& d, Model& m) {
   }
   m.rebuild_elements();
   m.gravity = d.gravity;
+  for (const JointRecord& j : d.joints) {
+    auto it = id_of.find(j.particle);
+    if (it == id_of.end()) reader.fail(j.element, "attribute 'particle': no particle " + std::to_string(j.particle));
+    try {
+      m.add_joint(it->second, j.angle, j.stiffness);
+    } catch (const ModelError& e) {
+      reader.fail(j.element, e.what());
+    }
+  }
 }
 
 void load(const std::string& xml, const std::string& name, Model& m, SolverSettings& s) {

@@ -25,6 +25,7 @@
 //         <edge a b rest/> ... every quad edge once
 //       </patch>
 //     </blocks>
+//     <joints> <joint particle angle stiffness/> ... </joints>   (only if any)
 //   </tendril>
 //
 // Saving numbers particles and blocks densely (0..n-1) in the order of their
