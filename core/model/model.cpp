@@ -54,7 +54,7 @@ void Model::free_particle(ParticleId p) {
   else changes->deleted_particles.push_back(p);
 }
 
-BlockId Model::new_block(BlockKind k, const Section& s, bool closed) {
+BlockId Model::new_block(BlockKind k, Section s, bool closed) {
   BlockId b;
   if (!free_blocks_.empty()) {
     b = free_blocks_.back();

@@ -192,7 +192,7 @@ class Model {
  private:
   ParticleId new_particle(const Vec3& x);
   void free_particle(ParticleId p);
-  BlockId new_block(BlockKind k, const Section& s, bool closed);
+  BlockId new_block(BlockKind k, Section s, bool closed);  // by value: s may live in `blocks`
   void free_block(BlockId b);
   Dart new_dart(BlockId b, ParticleId p);
   void free_dart(Dart d);
