@@ -486,6 +486,9 @@ class Reader {
   BlockRecord read_patch(const tinyxml2::XMLElement* e) const;
   BlockRecord read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a, BlockRecord& b) const;
   void check_references(const Document& d) const;
+  void match_edges(const tinyxml2::XMLElement* e, const BlockRecord& b,
+                   const std::vector<const tinyxml2::XMLElement*>& edge_elements,
+                   std::map<std::pair<unsigned, unsigned>, int>& expected, const char* where) const;
   void no_children(const tinyxml2::XMLElement* e) const {
     if (const tinyxml2::XMLElement* c = e->FirstChildElement())
       fail(c, std::string("unknown element <") + c->Name() + "> inside <" + e->Name() + ">");
@@ -755,20 +758,7 @@ BlockRecord Reader::read_patch(const tinyxml2::XMLElement* e) const {
   std::map<std::pair<unsigned, unsigned>, int> expected;  // -> index of its <edge>, -1 until seen
   auto key = [](unsigned x, unsigned y) { return std::make_pair(std::min(x, y), std::max(x, y)); };
   for (const QuadGrid::Edge& g : QuadGrid::edges(b.rows, b.cols)) expected[key(b.nodes[g.a], b.nodes[g.b])] = -1;
-  for (std::size_t k = 0; k < b.edges.size(); ++k) {
-    auto it = expected.find(key(b.edges[k].a, b.edges[k].b));
-    if (it == expected.end())
-      fail(edge_elements[k], "attributes 'a' and 'b': particles " + std::to_string(b.edges[k].a) + " and " +
-                                 std::to_string(b.edges[k].b) + " are not neighbours in the grid");
-    if (it->second >= 0)
-      fail(edge_elements[k], "attributes 'a' and 'b': this edge is already given on line " +
-                                 std::to_string(edge_elements[it->second]->GetLineNum()));
-    it->second = int(k);
-  }
-  for (const auto& [pair, k] : expected)
-    if (k < 0)
-      fail(e, "no <edge a b rest> between particles " + std::to_string(pair.first) + " and " +
-                  std::to_string(pair.second));
+  match_edges(e, b, edge_elements, expected, "the grid");
   return b;
 }
 
@@ -803,11 +793,21 @@ BlockRecord Reader::read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a
     no_children(c);
   }
   if (b.nodes.empty()) fail(e, "a patch needs attributes 'rows' and 'cols' with <node>s, or <quad a b c d> children");
+  match_edges(e, b, edge_elements, expected, "a quad");
+  return b;
+}
+
+// Every expected edge (keyed by its sorted particle pair, value -1) must be
+// given exactly once among the patch's <edge> elements.
+void Reader::match_edges(const tinyxml2::XMLElement* e, const BlockRecord& b,
+                         const std::vector<const tinyxml2::XMLElement*>& edge_elements,
+                         std::map<std::pair<unsigned, unsigned>, int>& expected, const char* where) const {
+  auto key = [](unsigned x, unsigned y) { return std::make_pair(std::min(x, y), std::max(x, y)); };
   for (std::size_t k = 0; k < b.edges.size(); ++k) {
     auto it = expected.find(key(b.edges[k].a, b.edges[k].b));
     if (it == expected.end())
       fail(edge_elements[k], "attributes 'a' and 'b': particles " + std::to_string(b.edges[k].a) + " and " +
-                                 std::to_string(b.edges[k].b) + " are not neighbours in a quad");
+                                 std::to_string(b.edges[k].b) + " are not neighbours in " + where);
     if (it->second >= 0)
       fail(edge_elements[k], "attributes 'a' and 'b': this edge is already given on line " +
                                  std::to_string(edge_elements[it->second]->GetLineNum()));
@@ -817,7 +817,6 @@ BlockRecord Reader::read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a
     if (k < 0)
       fail(e, "no <edge a b rest> between particles " + std::to_string(pair.first) + " and " +
                   std::to_string(pair.second));
-  return b;
 }
 
 void Reader::check_references(const Document& d) const {
