@@ -61,6 +61,9 @@ SubdividedPatch subdivide_patch(Model& m, BlockId b) {
 SubdividedPatch subdivide_patch(Model& m, BlockId b, const Section& s) {
   const std::string what = "subdivide_patch";
   PatchMesh old = patch_mesh(m, b, what.c_str());
+  if (m.is_cst_patch(b))  // the new quads would need a new triangulation
+    throw ModelError(what + ": patch " + std::to_string(b) + " is in CST mode; switch patch " + std::to_string(b) +
+                     " back to bars first");
   validate_section(s, what);
   // Locked particles hold a constraint and shared ones another block's
   // geometry: neither may be moved by smoothing.

@@ -3,6 +3,7 @@
 // cell it belongs to, so a swap-remove can re-point that cell in O(1).
 #include <vector>
 
+#include "model/membrane.hpp"
 #include "model/types.hpp"
 #include "model/undo_log.hpp"
 
@@ -51,6 +52,19 @@ struct RotationalJoint {
   ParticleId particle;
   double angle;      // target included angle between the two beams [rad]
   double stiffness;  // fictitious stiffness of the projections [N/m]
+};
+
+// Constant strain triangle of a patch in CST mode (thesis 3.2.8.2): side
+// i -> j along the warp (the first side, eq. 3.36), j -> k along the weft,
+// k -> i the diagonal of its quad. Form-finding: the prescribed stresses
+// sigma (eq. 3.36). Analysis: sigma is the prestress, plus the orthotropic
+// stresses of the strains against `ref` (eq. 3.37-3.39). dart: the dart of
+// its quad at i on side i -> j.
+struct Cst {
+  ParticleId i, j, k;
+  Membrane membrane;
+  CstReference ref;
+  std::uint32_t dart;
 };
 
 template <class E>

@@ -18,7 +18,10 @@ Model::Model()
       ring_prev(map.add_column<Dart>(kNoDart)),
       rest_length(map.add_column<double>(0.0)),
       dart_beam6(map.add_column<ElementIndex>(kNone)),
-      beam_end(map.add_column<Quat>(Quat::Identity())) {
+      beam_end(map.add_column<Quat>(Quat::Identity())),
+      cst_first(map.add_column<std::uint8_t>(0)),
+      cst_reference(map.add_column<CstReference>(CstReference{})),
+      dart_cst(map.add_column<ElementIndex>(kNone)) {
   UndoLog* log = &map.undo_log();
   particles.attach(log);
   blocks.attach(log);
@@ -27,6 +30,7 @@ Model::Model()
   hinges.items.attach(log);
   beam6s.items.attach(log);
   joints.items.attach(log);
+  csts.items.attach(log);
 }
 
 void Model::require_particle(ParticleId p, const char* what) const {
@@ -67,6 +71,7 @@ BlockId Model::new_block(BlockKind k, Section s, bool closed) {
   blk.kind = k;
   blk.closed = closed;
   blk.dofs = 3;
+  blk.membrane = Membrane{};
   blk.section = s;
   blk.dart = kNoDart;
   blk.darts = 0;
@@ -267,6 +272,7 @@ void Model::refresh_vertex(Dart d) {
   }
   refresh_hinge(d);
   refresh_hinge(map.alpha(0, d));
+  refresh_csts(d);
 }
 
 // --- 6-DOF beam elements -------------------------------------------------------
@@ -375,6 +381,7 @@ void Model::rebuild_elements() {
   bars.items.clear();
   hinges.items.clear();
   beam6s.items.clear();
+  csts.items.clear();
   for (ParticleId p = 0; p < particles.capacity(); ++p) particles.lumped_mass[p] = 0.0;
   particles.clear_rotational();
   const std::size_t n = map.capacity();
@@ -382,11 +389,13 @@ void Model::rebuild_elements() {
     dart_bar[d] = kNone;
     dart_hinge[d] = kNone;
     dart_beam6[d] = kNone;
+    dart_cst[d] = kNone;
   }
   for (Dart d = 0; d < n; ++d) {
     if (!map.alive(d)) continue;
-    if (dart_bar[d] == kNone && dart_beam6[d] == kNone && !map.is_free(0, d)) add_edge_element(d);
+    if (dart_bar[d] == kNone && dart_beam6[d] == kNone && !map.is_free(0, d) && edge_has_bar(d)) add_edge_element(d);
     if (dart_hinge[d] == kNone) add_vertex_element(d);
+    if (cst_first[d] && is_cst_patch(dart_block[d])) add_cst(d);
   }
 }
 

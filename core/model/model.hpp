@@ -23,6 +23,7 @@ struct Block {
   // particle (Beam6 elements, eq. 3.44-3.50). Other blocks: 3.
   std::uint8_t dofs = 3;
   Section section;
+  Membrane membrane;  // patches: bars or CST (patch_formulations.cpp)
   Dart dart = kNoDart;  // any dart of the component
   std::size_t darts = 0;
   bool alive = false;
@@ -109,6 +110,32 @@ class Model {
   void remove_from_patch(ParticleId p);           // rule 23: a simple particle and its quads; splits the rest
   BlockId merge_patches(BlockId a, BlockId b);    // rule 26: sews b onto a along common boundary edges; returns a
 
+  // --- patch formulations (thesis 5.5.2.2), patch_formulations.cpp --------
+  // Switches a patch between elastic bars and constant strain triangles
+  // between steps, at a cost proportional to the patch; the map (its quads)
+  // does not change. In CST mode the bars of the interior edges go and the
+  // triangles carry the membrane; the boundary edges keep their bars: they
+  // are the edge cables a CST membrane needs (thesis 3.2.8.2), and the
+  // patch's boundary behaves the same in both formulations. The triangles
+  // come from the meshing layer (edge classification, fig. 5.30): two per
+  // quad, (a, b, c) and (c, d, a) for its corners a, b, c, d in order round
+  // the quad, side a-b along the warp. Mode Bars takes no triangles and
+  // restores the interior bars with their rest lengths. Analysis mode takes
+  // each triangle's reference geometry from the current positions, or from
+  // `reference` (one per triangle, the model database). Switching a CST
+  // patch again (form-finding -> analysis) replaces its triangles.
+  // Topology rules that rewrite a CST patch's quads (remove_from_patch,
+  // merge_patches, subdivision) refuse: switch it back to bars first.
+  // delete_patch, and merge / explode of its particles, keep it consistent.
+  using Triangle = std::array<ParticleId, 3>;
+  void set_patch_formulation(BlockId b, const Membrane& m, const std::vector<Triangle>& triangles = {},
+                             const std::vector<CstReference>* reference = nullptr);
+  const Membrane& patch_formulation(BlockId b) const;
+  // The CST triangles of a patch (empty in bars mode) and their references,
+  // in dart order.
+  std::vector<Triangle> patch_triangles(BlockId b, std::vector<CstReference>* reference = nullptr) const;
+  bool is_cst_patch(BlockId b) const { return blocks[b].kind == BlockKind::Patch && blocks[b].membrane.cst(); }
+
   // --- constraints and loads --------------------------------------------
   void set_lock(ParticleId p, std::uint8_t bits);
   void set_passive(ParticleId p, bool passive);
@@ -170,6 +197,7 @@ class Model {
   ElementBuffer<Hinge> hinges;
   ElementBuffer<Beam6> beam6s;
   ElementBuffer<RotationalJoint> joints;  // joints.cpp
+  ElementBuffer<Cst> csts;                // patches in CST mode
 
   // Per-dart columns: 0-embedding, owning block, element references, and the
   // ring of darts embedding the same particle.
@@ -185,6 +213,12 @@ class Model {
   // relative to that particle's frame, its x axis looking along the edge away
   // from the particle (see end_flip). Kept (unused) while the beam is 3 DOF.
   DartColumn<Quat>& beam_end;
+  // CST patches: cst_first marks the dart at the first corner of a triangle
+  // on its warp side (model state: the triangulation), cst_reference holds
+  // that triangle's reference geometry, dart_cst its element.
+  DartColumn<std::uint8_t>& cst_first;
+  DartColumn<CstReference>& cst_reference;
+  DartColumn<ElementIndex>& dart_cst;
 
   void require_particle(ParticleId p, const char* what) const;
   void require_block(BlockId b, const char* what) const;
@@ -221,6 +255,13 @@ class Model {
   void add_vertex_element(Dart d);
   void init_beam_frames(BlockId b);          // formulations.cpp
   std::vector<Dart> path_darts(BlockId b) const;  // per segment, its dart at the start node
+  // CST elements (patch_formulations.cpp): one per dart marked cst_first.
+  void add_cst(Dart d);
+  void remove_cst(Dart d);
+  void bind_cst(ElementIndex e);     // particles from the dart's face
+  void refresh_csts(Dart d);         // after re-embedding d: the triangles of its face
+  bool edge_has_bar(Dart d) const;   // not an interior edge of a CST patch
+  std::string check_cst_face(Dart d) const;
   // Moves dart d from its particle to q, keeping its beam end where it was.
   void rehome_dart(Dart d, ParticleId q);
   std::string check_dart(Dart d) const;

@@ -30,6 +30,9 @@ std::string Model::check_dart(Dart d) const {
   if (six) {
     if (dart_bar[d] != kNone) return "dart " + std::to_string(d) + " of a 6-DOF beam has a bar";
     if (std::string m = check_beam6(d); !m.empty()) return m;
+  } else if (!edge_has_bar(d)) {
+    if (dart_bar[d] != kNone || dart_beam6[d] != kNone)
+      return "dart " + std::to_string(d) + ": an interior edge of a CST patch has an edge element";
   } else {
     if (dart_beam6[d] != kNone) return "dart " + std::to_string(d) + " of a 3-DOF block has a 6-DOF beam element";
     ElementIndex e = dart_bar[d];
@@ -43,6 +46,11 @@ std::string Model::check_dart(Dart d) const {
     if (!near(bar.rest_length, rest_length[d]) || bar.EA != blk.section.EA || bar.prestress != blk.section.prestress ||
         bar.line_mass != blk.section.line_mass || bar.tension_only != (blk.kind == BlockKind::Cable))
       return "bar " + std::to_string(e) + " parameters differ from its block and edge";
+  }
+  if (blk.kind == BlockKind::Patch && blk.membrane.cst()) {
+    if (std::string m = check_cst_face(d); !m.empty()) return m;
+  } else if (cst_first[d] || dart_cst[d] != kNone) {
+    return "dart " + std::to_string(d) + " carries a CST triangle outside a CST patch";
   }
   const bool interior = blk.kind == BlockKind::Beam && !six && !map.is_free(1, d);
   ElementIndex h = dart_hinge[d];
@@ -155,6 +163,9 @@ std::string Model::check() const {
     ++rot_degree[el.i];
     ++rot_degree[el.j];
   }
+  for (std::size_t e = 0; e < csts.size(); ++e)
+    if (!map.alive(csts[e].dart) || dart_cst[csts[e].dart] != e || !cst_first[csts[e].dart])
+      return "CST element " + std::to_string(e) + " is orphaned";
   for (std::size_t h = 0; h < hinges.size(); ++h)
     if (!map.alive(hinges[h].dart) || dart_hinge[hinges[h].dart] != h) return "hinge " + std::to_string(h) + " is orphaned";
   for (BlockId b = 0; b < blocks.size(); ++b) {
@@ -166,6 +177,7 @@ std::string Model::check() const {
     if (blk.kind != BlockKind::Patch) {
       if (blk.closed == map.is_free(1, blk.dart)) return "beam " + std::to_string(b) + ": start dart does not match open/closed";
     }
+    if (blk.membrane.cst() && blk.kind != BlockKind::Patch) return "block " + std::to_string(b) + " is CST but not a patch";
     if (blk.dofs != 3 && !(blk.dofs == 6 && blk.kind == BlockKind::Beam))
       return "block " + std::to_string(b) + " has " + std::to_string(int(blk.dofs)) + " DOF per particle";
   }

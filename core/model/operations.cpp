@@ -187,6 +187,7 @@ void Model::delete_component(BlockId b) {
   for (Dart d : darts) {
     remove_hinge(d);
     remove_edge_element(d);
+    remove_cst(d);
     touched.push_back(dart_particle[d]);
   }
   for (Dart d : darts) free_dart(d);

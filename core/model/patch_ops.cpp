@@ -31,6 +31,9 @@ void Model::remove_from_patch(ParticleId p) {
     throw ModelError("remove_from_patch: particle " + pid(p) + " is " + state_name(s) +
                      "; only a simple particle of one patch can be removed (explode a shared one first)");
   const BlockId blk = dart_block[ds[0]];
+  if (is_cst_patch(blk))
+    throw ModelError("remove_from_patch: patch " + bid(blk) + " is in CST mode; switch patch " + bid(blk) +
+                     " back to bars first");
   // The darts of every quad incident to p.
   std::set<Dart> gone;
   for (Dart d : ds)
@@ -84,6 +87,10 @@ BlockId Model::merge_patches(BlockId a, BlockId b) {
   if (a == b) throw ModelError("merge_patches: both arguments are block " + bid(a));
   if (blocks[a].kind != BlockKind::Patch) throw ModelError("merge_patches: block " + bid(a) + " is not a patch");
   if (blocks[b].kind != BlockKind::Patch) throw ModelError("merge_patches: block " + bid(b) + " is not a patch");
+  for (BlockId x : {a, b})
+    if (is_cst_patch(x))
+      throw ModelError("merge_patches: patch " + bid(x) + " is in CST mode; switch patch " + bid(x) +
+                       " back to bars first");
   using Key = std::pair<ParticleId, ParticleId>;
   struct Sides {
     std::size_t darts = 0;  // 2 per quad side on the edge

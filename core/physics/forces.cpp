@@ -120,6 +120,7 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
   for (const Beam6& b : model_.beam6s.items)
     if (active[b.i] | active[b.j]) beam6_forces(b, x, q, F, T, S, K, gf);
   if (!model_.joints.items.empty()) accumulate_joint_forces(x, F, S);
+  if (!model_.csts.items.empty()) accumulate_cst_forces(x, F, S);
 }
 
 }  // namespace tendril

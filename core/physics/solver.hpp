@@ -125,6 +125,7 @@ class Solver {
   // rotational stiffnesses K (rotating particles only) at frames q.
   void accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S, Vec3* T, double* K) const;
   void accumulate_joint_forces(const Vec3* x, Vec3* F, double* S) const;  // joints.cpp
+  void accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const;    // cst_forces.cpp
   void size_scratch();
   void prepare_masses();  // mass_, inertia_ and residual_; throws before anything moves
   void stage_forces();    // forces at xs_ into Fs_, Ss_; throws if not finite

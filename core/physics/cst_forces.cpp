@@ -1,0 +1,92 @@
+// Constant strain triangles (thesis 3.2.8.2): nodal forces of a uniform
+// membrane stress and the greatest direct stiffnesses of eq. 3.40 for the
+// fictitious masses of eq. 3.4.
+//
+// Frame: e1 along side 1 (i -> j, the warp, eq. 3.36), e3 the normal, e2 =
+// e3 x e1 in the plane towards k, all in the deformed state. The in-plane
+// stress is sigma_x e1e1 + sigma_y e2e2 + tau (e1e2 + e2e1). A uniform stress
+// pulls each corner a with 1/2 sigma m_a, m_a the outward normal of the
+// opposite side times its length. Written as tensions along the three sides
+// this is exactly Barnes' eq. 3.36 (direct stresses) and eq. 3.39 (shear);
+// the stress form stays bounded when the triangle degenerates, where the
+// side tensions (cot of angles going to 0) do not.
+//
+// Analysis (eq. 3.37-3.38): with the reference side 1 of length l1 along x
+// and k at (c, h), and now (c', h') on side l1', the strains are
+// eps_x = l1'/l1 - 1, eps_y = h'/h - 1 and the shear gamma = (c' - c (1 +
+// eps_x)) / h: eq. 3.37's gamma times (1 + eps_y), the same to first order,
+// without dividing by the current height.
+//
+// A triangle whose area vanishes (collinear corners, twice its area below
+// 1e-10 times its longest side squared) has no plane and no normal: it
+// exerts no force and adds only its elastic stiffness.
+#include <algorithm>
+
+#include "physics/solver.hpp"
+
+namespace tendril {
+
+namespace {
+constexpr double kDegenerate = 1e-10;
+}
+
+void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
+  const std::uint8_t* active = model_.particles.active.data();
+  const double gf = settings.geometric_factor;
+  for (const Cst& t : model_.csts.items) {
+    if (!(active[t.i] | active[t.j] | active[t.k])) continue;
+    const Membrane& m = t.membrane;
+    const bool analysis = m.mode == Membrane::Analysis;
+    // Elastic stiffness (analysis): the diagonal of A B^T D B bounded over
+    // directions, on the reference shape, eq. 3.35's EA / L for a membrane.
+    double elastic[3] = {0, 0, 0};
+    if (analysis) {
+      const double d = std::max(m.dxx, m.dyy) + std::max(std::abs(m.dxy), std::abs(m.dyx)) + m.G;
+      const CstReference& r = t.ref;
+      const double twice_area = r.l1 * r.h;
+      elastic[0] = d * ((r.c - r.l1) * (r.c - r.l1) + r.h * r.h) / twice_area;
+      elastic[1] = d * (r.c * r.c + r.h * r.h) / twice_area;
+      elastic[2] = d * r.l1 * r.l1 / twice_area;
+    }
+    const Vec3 a = x[t.j] - x[t.i], b = x[t.k] - x[t.i], side3 = x[t.k] - x[t.j];
+    const Vec3 n = a.cross(b);
+    const double twice_area = n.norm();
+    const double longest = std::max({a.squaredNorm(), b.squaredNorm(), side3.squaredNorm()});
+    if (!(twice_area > kDegenerate * longest)) {
+      S[t.i] += elastic[0];
+      S[t.j] += elastic[1];
+      S[t.k] += elastic[2];
+      continue;
+    }
+    const double l1 = a.norm();
+    const Vec3 e1 = a / l1, e3 = n / twice_area, e2 = e3.cross(e1);
+    double sx = m.sigma_warp, sy = m.sigma_weft, tau = 0;
+    if (analysis) {
+      const CstReference& r = t.ref;
+      const double h = twice_area / l1, c = b.dot(e1);
+      const double ex = l1 / r.l1 - 1, ey = h / r.h - 1;
+      const double gamma = (c - r.c * (1 + ex)) / r.h;
+      sx += m.dxx * ex + m.dxy * ey;  // eq. 3.38
+      sy += m.dyx * ex + m.dyy * ey;
+      tau = m.G * gamma;
+    }
+    auto pull = [&](const Vec3& side) {  // 1/2 sigma m for the side opposite a corner
+      const Vec3 out = side.cross(e3);
+      const double u = out.dot(e1), v = out.dot(e2);
+      return 0.5 * ((sx * u + tau * v) * e1 + (tau * u + sy * v) * e2);
+    };
+    const Vec3 fi = pull(side3), fj = pull(-b), fk = pull(a);
+    F[t.i] += fi;
+    F[t.j] += fj;
+    F[t.k] += fk;
+    // Eq. 3.40: the geometric stiffness of a corner under tension grows with
+    // (opposite side)^2 / (twice the area), i.e. base over height; both
+    // stresses count, so neither direction is left without mass.
+    const double g = gf * (std::max(sx, 0.0) + std::max(sy, 0.0)) / twice_area;
+    S[t.i] += elastic[0] + g * side3.squaredNorm();
+    S[t.j] += elastic[1] + g * b.squaredNorm();
+    S[t.k] += elastic[2] + g * a.squaredNorm();
+  }
+}
+
+}  // namespace tendril
