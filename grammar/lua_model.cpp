@@ -12,6 +12,7 @@
 #include "io/obj.hpp"
 #include "lua_args.hpp"
 #include "lua_meshing.hpp"
+#include "lua_patch_formulation.hpp"
 #include "lua_query.hpp"
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
@@ -807,10 +808,12 @@ int l_save_obj(lua_State* L) {
 // --- rotation: 6-DOF beams ---------------------------------------------------------
 
 // m:formulation(beam) -> 3 or 6; m:formulation(beam, 3 | 6) switches it.
+// Patches: bars or CST, lua_patch_formulation.cpp.
 int l_formulation(lua_State* L) {
   const char* fn = "formulation";
   Scene& s = check_scene(L, fn);
   const BlockId b = check_block(L, 2, s, fn);
+  if (s.model.blocks[b].kind == BlockKind::Patch) return patch_formulation(L, s, b);
   if (lua_isnoneornil(L, 3)) {
     lua_pushinteger(L, s.model.beam_formulation(b));
     return 1;

@@ -231,6 +231,42 @@ constexpr const char* kEndANames[4] = {"aw", "ax", "ay", "az"};
 constexpr const char* kEndBNames[4] = {"bw", "bx", "by", "bz"};
 constexpr const char* kQuadNames[4] = {"a", "b", "c", "d"};  // <quad>: corners in order
 
+// A patch's formulation (attributes): nothing for bars.
+void write_membrane(Writer& w, const Membrane& mem) {
+  if (!mem.cst()) return;
+  w.attr("membrane", membrane_mode_name(mem.mode));
+  w.attr("sigma_warp", mem.sigma_warp);
+  w.attr("sigma_weft", mem.sigma_weft);
+  if (mem.mode != Membrane::Analysis) return;
+  w.attr("dxx", mem.dxx);
+  w.attr("dxy", mem.dxy);
+  w.attr("dyx", mem.dyx);
+  w.attr("dyy", mem.dyy);
+  w.attr("G", mem.G);
+}
+
+// A CST patch's triangles (children), sorted by their file ids.
+void write_triangles(Writer& w, const Model& m, BlockId b, const std::vector<unsigned>& dense) {
+  if (!m.blocks[b].membrane.cst()) return;
+  std::vector<CstReference> refs;
+  const std::vector<Model::Triangle> tris = m.patch_triangles(b, &refs);
+  std::vector<std::pair<std::array<unsigned, 3>, CstReference>> rows;
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    rows.push_back({{dense[tris[t][0]], dense[tris[t][1]], dense[tris[t][2]]}, refs[t]});
+  std::sort(rows.begin(), rows.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  const bool analysis = m.blocks[b].membrane.mode == Membrane::Analysis;
+  for (const auto& [t, r] : rows) {
+    w.open("triangle");
+    for (int k = 0; k < 3; ++k) w.attr(kQuadNames[k], t[k]);
+    if (analysis) {
+      w.attr("l1", r.l1);
+      w.attr("h", r.h);
+      w.attr("x", r.c);
+    }
+    w.close();
+  }
+}
+
 std::string write_document(const Model& m, const SolverSettings& s) {
   // Dense file ids in the order of live ids.
   std::vector<unsigned> dense(m.particles.capacity(), kNone);
@@ -349,6 +385,7 @@ std::string write_document(const Model& m, const SolverSettings& s) {
           w.open("patch");
           w.attr("id", id);
           write_section(w, blk.section);
+          write_membrane(w, blk.membrane);
           for (const auto& q : list.quads) {
             w.open("quad");
             for (int k = 0; k < 4; ++k) w.attr(kQuadNames[k], q[k]);
@@ -361,6 +398,7 @@ std::string write_document(const Model& m, const SolverSettings& s) {
             w.attr("rest", rest);
             w.close();
           }
+          write_triangles(w, m, b, dense);
           w.close();
           break;
         }
@@ -369,6 +407,7 @@ std::string write_document(const Model& m, const SolverSettings& s) {
         w.attr("rows", unsigned(g.rows));
         w.attr("cols", unsigned(g.cols));
         write_section(w, blk.section);
+        write_membrane(w, blk.membrane);
         for (ParticleId p : g.nodes) {
           w.open("node");
           w.attr("p", dense[p]);
@@ -381,6 +420,7 @@ std::string write_document(const Model& m, const SolverSettings& s) {
           w.attr("rest", g.rest[e.index]);
           w.close();
         }
+        write_triangles(w, m, b, dense);
         w.close();
         break;
       }
@@ -433,6 +473,11 @@ struct BlockRecord {
   std::vector<unsigned> nodes;  // file ids: cable ends, beam path, grid row-major
   std::vector<EdgeRecord> edges;
   const tinyxml2::XMLElement* element = nullptr;
+  // CST patches: the formulation, triangles (file ids) and their references.
+  Membrane membrane;
+  std::vector<std::array<unsigned, 3>> triangles;
+  std::vector<CstReference> references;
+  std::vector<const tinyxml2::XMLElement*> triangle_elements;
 };
 
 struct JointRecord {
@@ -486,6 +531,8 @@ class Reader {
   BlockRecord read_patch(const tinyxml2::XMLElement* e) const;
   BlockRecord read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a, BlockRecord& b) const;
   void check_references(const Document& d) const;
+  void read_triangle(const tinyxml2::XMLElement* c, Attributes& ca, BlockRecord& b) const;
+  void check_triangles(const tinyxml2::XMLElement* e, const BlockRecord& b) const;
   void match_edges(const tinyxml2::XMLElement* e, const BlockRecord& b,
                    const std::vector<const tinyxml2::XMLElement*>& edge_elements,
                    std::map<std::pair<unsigned, unsigned>, int>& expected, const char* where) const;
@@ -554,6 +601,26 @@ class Attributes {
         if (!(v >= 0)) bad(name, "must be >= 0");
     }
     return s;
+  }
+  // A patch's formulation: absent, bars; "form" or "analysis", CST.
+  Membrane membrane() {
+    Membrane m;
+    const char* v = raw("membrane");
+    if (!v) return m;
+    const std::string mode = v;
+    if (mode == "form") m.mode = Membrane::FormFinding;
+    else if (mode == "analysis") m.mode = Membrane::Analysis;
+    else bad("membrane", "must be \"form\" or \"analysis\" (absent: bars), not \"" + mode + "\"");
+    m.sigma_warp = real("sigma_warp");
+    m.sigma_weft = real("sigma_weft");
+    if (m.mode == Membrane::Analysis) {
+      m.dxx = real("dxx");
+      m.dxy = real("dxy");
+      m.dyx = real("dyx");
+      m.dyy = real("dyy");
+      m.G = real("G");
+    }
+    return m;
   }
   // A unit quaternion from four attributes (all absent: the identity). Taken
   // as written, so the file round-trips bit for bit.
@@ -721,6 +788,7 @@ BlockRecord Reader::read_patch(const tinyxml2::XMLElement* e) const {
   b.kind = BlockKind::Patch;
   b.element = e;
   b.id = a.index("id");
+  b.membrane = a.membrane();
   if (!e->Attribute("rows") && !e->Attribute("cols")) return read_quad_patch(e, a, b);
   unsigned rows = a.index("rows"), cols = a.index("cols");
   if (rows < 2 || rows > 1u << 15) a.bad("rows", "must be an integer from 2 to 32768");
@@ -740,6 +808,8 @@ BlockRecord Reader::read_patch(const tinyxml2::XMLElement* e) const {
       if (!(r.rest > 0)) ca.bad("rest", "must be > 0");
       b.edges.push_back(r);
       edge_elements.push_back(c);
+    } else if (std::strcmp(c->Name(), "triangle") == 0) {
+      read_triangle(c, ca, b);
     } else {
       fail(c, std::string("unknown element <") + c->Name() + "> inside <patch>");
     }
@@ -759,6 +829,7 @@ BlockRecord Reader::read_patch(const tinyxml2::XMLElement* e) const {
   auto key = [](unsigned x, unsigned y) { return std::make_pair(std::min(x, y), std::max(x, y)); };
   for (const QuadGrid::Edge& g : QuadGrid::edges(b.rows, b.cols)) expected[key(b.nodes[g.a], b.nodes[g.b])] = -1;
   match_edges(e, b, edge_elements, expected, "the grid");
+  check_triangles(e, b);
   return b;
 }
 
@@ -786,6 +857,8 @@ BlockRecord Reader::read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a
       if (!(r.rest > 0)) ca.bad("rest", "must be > 0");
       b.edges.push_back(r);
       edge_elements.push_back(c);
+    } else if (std::strcmp(c->Name(), "triangle") == 0) {
+      read_triangle(c, ca, b);
     } else {
       fail(c, std::string("unknown element <") + c->Name() + "> inside <patch>");
     }
@@ -794,7 +867,32 @@ BlockRecord Reader::read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a
   }
   if (b.nodes.empty()) fail(e, "a patch needs attributes 'rows' and 'cols' with <node>s, or <quad a b c d> children");
   match_edges(e, b, edge_elements, expected, "a quad");
+  check_triangles(e, b);
   return b;
+}
+
+// <triangle a b c [l1 h x]/>: a CST triangle, side a-b along the warp; in
+// analysis its reference shape (side a-b of length l1, c at (x, h)).
+void Reader::read_triangle(const tinyxml2::XMLElement* c, Attributes& ca, BlockRecord& b) const {
+  if (!b.membrane.cst()) fail(c, "a <triangle> needs the patch's attribute membrane=\"form\" or \"analysis\"");
+  std::array<unsigned, 3> t{};
+  for (int k = 0; k < 3; ++k) t[k] = ca.index(kQuadNames[k]);
+  CstReference r;
+  if (b.membrane.mode == Membrane::Analysis) {
+    r.l1 = ca.real("l1");
+    r.h = ca.real("h");
+    r.c = ca.real("x");
+    if (!(r.l1 > 0)) ca.bad("l1", "must be > 0");
+    if (!(r.h > 0)) ca.bad("h", "must be > 0");
+  }
+  b.triangles.push_back(t);
+  b.references.push_back(r);
+  b.triangle_elements.push_back(c);
+}
+
+void Reader::check_triangles(const tinyxml2::XMLElement* e, const BlockRecord& b) const {
+  if (b.membrane.cst() && b.triangles.empty())
+    fail(e, "attribute 'membrane': a CST patch needs its <triangle a b c> children");
 }
 
 // Every expected edge (keyed by its sorted particle pair, value -1) must be
@@ -838,6 +936,11 @@ void Reader::check_references(const Document& d) const {
       if (!by_id.count(b.nodes[k]))
         fail(refs[k].first, std::string("attribute '") + refs[k].second + "': no particle with id " +
                                 std::to_string(b.nodes[k]));
+    for (std::size_t t = 0; t < b.triangles.size(); ++t)
+      for (int k = 0; k < 3; ++k)
+        if (!by_id.count(b.triangles[t][k]))
+          fail(b.triangle_elements[t], std::string("attribute '") + kQuadNames[k] + "': no particle with id " +
+                                           std::to_string(b.triangles[t][k]));
     if (b.kind == BlockKind::Beam) {  // add_beam refuses consecutive particles that coincide
       const std::size_t n = b.nodes.size(), segments = b.closed ? n : n - 1;
       for (std::size_t k = 0; k < segments; ++k) {
@@ -988,6 +1091,12 @@ void build(const Reader& reader, const Document& d, Model& m) {
           m.beam_end[m.map.alpha(0, d)] = e.end_b;
           d = m.map.alpha(1, m.map.alpha(0, d));
         }
+      }
+      if (r.membrane.cst()) {  // the stored triangles and reference shapes
+        std::vector<Model::Triangle> tris;
+        for (const auto& t : r.triangles) tris.push_back({id_of.at(t[0]), id_of.at(t[1]), id_of.at(t[2])});
+        m.set_patch_formulation(b, r.membrane, tris,
+                                r.membrane.mode == Membrane::Analysis ? &r.references : nullptr);
       }
     } catch (const ModelError& e) {
       reader.fail(r.element, e.what());

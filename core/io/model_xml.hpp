@@ -24,6 +24,11 @@
 //         <quad a b c d/> ...                       Catmull-Clark, projection)
 //         <edge a b rest/> ... every quad edge once
 //       </patch>
+//       A patch in CST mode (thesis 5.5.2.2) adds membrane="form" sigma_warp
+//       sigma_weft, or membrane="analysis" with also dxx dxy dyx dyy G, and
+//       its triangles: <triangle a b c/> (side a-b along the warp), in
+//       analysis <triangle a b c l1 h x/> with the reference shape (side
+//       a-b of length l1, c at x along it and h across).
 //     </blocks>
 //     <joints> <joint particle angle stiffness/> ... </joints>   (only if any)
 //   </tendril>

@@ -31,6 +31,16 @@ std::string Trace::number(double x) {
 
 std::string Trace::vec(const Vec3& v) { return number(v.x()) + " " + number(v.y()) + " " + number(v.z()); }
 
+std::string Trace::patch_formulation(BlockId b, const Membrane& m, const std::vector<Model::Triangle>& triangles) {
+  std::string line = "formulation " + std::to_string(b) + " " + membrane_mode_name(m.mode);
+  if (m.cst()) line += " " + number(m.sigma_warp) + " " + number(m.sigma_weft);
+  if (m.mode == Membrane::Analysis)
+    for (double d : {m.dxx, m.dxy, m.dyx, m.dyy, m.G}) line += " " + number(d);
+  for (const Model::Triangle& t : triangles)
+    for (ParticleId p : t) line += " " + std::to_string(p);
+  return line;
+}
+
 std::string Trace::section(const Section& s) {
   return number(s.EA) + " " + number(s.EI) + " " + number(s.prestress) + " " + number(s.line_mass);
 }
@@ -140,7 +150,29 @@ void replay_trace(std::istream& in, const std::string& name, Model& m, Solver& s
         m.blocks[b].section = sec;
       } else if (op == "formulation") {
         BlockId b = r.id();
-        m.set_beam_formulation(b, int(r.number()));
+        const std::string kind = r.word();
+        if (kind == "bars" || kind == "form" || kind == "analysis") {  // a patch (thesis 5.5.2.2)
+          Membrane mem;
+          if (kind != "bars") {
+            mem.mode = kind == "form" ? Membrane::FormFinding : Membrane::Analysis;
+            mem.sigma_warp = r.number();
+            mem.sigma_weft = r.number();
+          }
+          if (kind == "analysis") {
+            mem.dxx = r.number();
+            mem.dxy = r.number();
+            mem.dyx = r.number();
+            mem.dyy = r.number();
+            mem.G = r.number();
+          }
+          const std::vector<ParticleId> ids = r.rest();
+          if (ids.size() % 3) throw ModelError(r.where + ": CST triangles need three particles each");
+          std::vector<Model::Triangle> tris;
+          for (std::size_t k = 0; k < ids.size(); k += 3) tris.push_back({ids[k], ids[k + 1], ids[k + 2]});
+          m.set_patch_formulation(b, mem, tris);
+        } else {
+          m.set_beam_formulation(b, int(r.number_of(kind)));
+        }
       } else if (op == "orientation") {
         ParticleId p = r.id();
         const double w = r.number(), x = r.number(), y = r.number(), z = r.number();

@@ -11,6 +11,8 @@
 //   insert A B  remove_from_beam P  lock P BITS  passive P 0|1  role P R  load P X Y Z
 //   mass P KG  position P X Y Z  gravity X Y Z  settings KEY=VALUE ...
 //   section6 B GJ EIy EIz   formulation B 3|6   orientation P W X Y Z
+//   formulation B bars | form SW SF A B C ... | analysis SW SF DXX DXY DYX DYY G A B C ...
+//     (a patch: bars, or CST triangles A B C with A-B along the warp)
 //   torque P X Y Z   steps N   open PATH (a model database)   # comment
 #include <iosfwd>
 #include <string>
@@ -42,6 +44,8 @@ class Trace {
   static std::string number(double x);  // exact: "%a"
   static std::string vec(const Vec3& v);
   static std::string section(const Section& s);
+  // The line that switches patch b (Model::set_patch_formulation).
+  static std::string patch_formulation(BlockId b, const Membrane& m, const std::vector<Model::Triangle>& triangles);
 
  private:
   std::vector<std::string> lines_;
