@@ -89,6 +89,25 @@ void build_beam_grid(Model& m, int s) {
   }
 }
 
+// The bar net's patch switched to CST form-finding (thesis 5.5.2.2): two
+// triangles per quad, 1 kN/m in warp and weft; only the boundary keeps bars.
+void build_cst_membrane(Model& m, int s) {
+  std::vector<ParticleId> grid = supported_grid(m, s);
+  const BlockId patch = m.add_quad_grid(grid, s, s, kNetSection);
+  std::vector<Model::Triangle> triangles;
+  for (int r = 0; r + 1 < s; ++r)
+    for (int c = 0; c + 1 < s; ++c) {
+      const ParticleId a = grid[r * s + c], b = grid[r * s + c + 1], cc = grid[(r + 1) * s + c + 1],
+                       d = grid[(r + 1) * s + c];
+      triangles.push_back({a, b, cc});
+      triangles.push_back({cc, d, a});
+    }
+  Membrane film;
+  film.mode = Membrane::FormFinding;
+  film.sigma_warp = film.sigma_weft = 1e3;
+  m.set_patch_formulation(patch, film, triangles);
+}
+
 struct Case {
   const char* name;
   void (*build)(Model&, int);
@@ -173,12 +192,14 @@ int main(int argc, char** argv) {
 
   const Case cases[] = {{"bar net", build_bar_net},
                         {"bar net 90% passive", build_mostly_passive_net},
-                        {"beam grid", build_beam_grid}};
+                        {"beam grid", build_beam_grid},
+                        {"cst membrane", build_cst_membrane}};
   std::puts("bench_throughput: Solver::step(), Leapfrog + kinetic damping, one thread");
   std::puts("  bar net   : s x s planar quad grid patch (add_quad_grid), bars EA=1e5 N, prestress 1e3 N;");
   std::puts("              boundary locked, 1 N out-of-plane load on every interior particle");
   std::puts("  beam grid : s beams along x and s along y through an s x s grid, every particle a crossing");
   std::puts("              shared by two 3-DOF spline beams (EA=1e6 N, EI=1e2 N m^2); same supports and load");
+  std::puts("  cst membrane: the bar net as CST form-finding, 2 triangles per quad, 1 kN/m both ways");
   std::puts("  p-it = particle-iteration (one particle advanced one step); RSS = resident set growth while");
   std::puts("  building the model (after malloc_trim), B/particle = that growth per particle");
   std::printf("  target per timed run: %.1f s, after 5 warm-up steps and >= 0.2 s of calibration steps%s\n\n", target_seconds,

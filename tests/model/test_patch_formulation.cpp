@@ -3,6 +3,7 @@
 // consistent with (or refused by) the patch's topology operations.
 #include <doctest/doctest.h>
 
+#include <random>
 #include <sstream>
 
 #include "../physics/cst_scenes.hpp"
@@ -167,4 +168,82 @@ TEST_CASE("patch formulation: topology operations on a CST patch") {
   m.delete_patch(sq.patch);
   CHECK(m.csts.size() == 0u);
   CHECK(m.check() == "");
+}
+
+TEST_CASE("patch formulation: random operations and switches in transactions stay valid and roll back exactly") {
+  // Two patches sharing an edge, a cable across them; random primitive
+  // operations and formulation switches, each in a transaction that commits
+  // or rolls back at random.
+  FlatSquare sq(4, 4.0);
+  Model& m = sq.m;
+  std::vector<ParticleId> more;
+  for (int r = 0; r <= 4; ++r)
+    for (int c = 0; c <= 2; ++c) more.push_back(c == 0 ? sq.at(r, 4) : m.add_particle(Vec3(4 + c, r, 0.1 * c)));
+  m.add_quad_grid(more, 5, 3, Section{1e3, 0, 0, 0});
+  m.add_cable(sq.at(2, 2), more[7], Section{1e3, 0, 1, 0});
+  std::mt19937 rng(7);
+  auto any_particle = [&] {
+    std::vector<ParticleId> live;
+    for (ParticleId p = 0; p < m.particles.capacity(); ++p)
+      if (m.particles.valid(p)) live.push_back(p);
+    return live[rng() % live.size()];
+  };
+  auto any_patch = [&] {
+    std::vector<BlockId> ps;
+    for (BlockId b : m.live_blocks())
+      if (m.blocks[b].kind == BlockKind::Patch) ps.push_back(b);
+    return ps.empty() ? BlockId(kNone) : ps[rng() % ps.size()];
+  };
+  int switched = 0, refused = 0, rolled_back = 0;
+  for (int round = 0; round < 400; ++round) {
+    const std::string before = fingerprint(m);
+    m.begin_transaction();
+    try {
+      switch (rng() % 7) {
+        case 0:
+        case 1: {
+          const BlockId b = any_patch();
+          if (b == kNone) break;
+          Membrane mem = form(1 + rng() % 3, 1);
+          if (rng() % 3 == 0) mem = Membrane{};
+          else if (rng() % 2) {
+            mem.mode = Membrane::Analysis;
+            mem.dxx = mem.dyy = 100;
+          }
+          m.set_patch_formulation(b, mem, mem.cst() ? triangles_of(m, b, Vec3(1, 0, 0)) : std::vector<Model::Triangle>{});
+          ++switched;
+          break;
+        }
+        case 2: m.explode(any_particle()); break;
+        case 3: m.merge({any_particle(), any_particle()}); break;
+        case 4: m.remove_from_patch(any_particle()); break;
+        case 5: {
+          const BlockId a = any_patch(), b = any_patch();
+          if (a != kNone) m.merge_patches(a, b);
+          break;
+        }
+        case 6: m.particles.position[any_particle()] += Vec3(0.01, -0.02, 0.03); break;
+      }
+    } catch (const ModelError&) {
+      ++refused;
+    }
+    if (rng() % 3 == 0) {
+      m.rollback_transaction();
+      ++rolled_back;
+      REQUIRE(fingerprint(m) == before);
+    } else {
+      m.commit_transaction();
+    }
+    const std::string c = m.check();
+    CAPTURE(round);
+    REQUIRE(c == "");
+  }
+  MESSAGE(switched << " switches, " << refused << " refusals, " << rolled_back << " rollbacks");
+  CHECK(switched > 30);
+  // The buffers patched locally hold what a rebuild from the map gives.
+  const std::size_t csts = m.csts.size(), bars = m.bars.size();
+  m.rebuild_elements();
+  CHECK(m.check() == "");
+  CHECK(m.csts.size() == csts);
+  CHECK(m.bars.size() == bars);
 }
