@@ -63,6 +63,9 @@ struct Case {
   std::vector<Integrator> integrators{kIntegrators.begin(), kIntegrators.end()};
   std::vector<int> segments;        // the full run
   std::vector<int> quick_segments;  // --quick (CI); must hold the default's
+  // --quick runs these integrators only (empty: all of `integrators`); for
+  // cases too slow to run every integrator in CI. Must hold the default's.
+  std::vector<Integrator> quick_integrators;
   Setting defaults;        // Leapfrog, kinetic damping, the published resolution
   double tolerance = 0;    // relative error allowed under `defaults`
   // Builds the model for the setting, relaxes it and measures the error.

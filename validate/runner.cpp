@@ -10,7 +10,7 @@ bool Row::passes() const { return failure.empty() && outcome.converged && outcom
 std::vector<Setting> matrix(const Case& c, bool quick) {
   std::vector<Setting> out;
   for (const std::string& formulation : c.formulations)
-    for (Integrator integrator : c.integrators)
+    for (Integrator integrator : quick && !c.quick_integrators.empty() ? c.quick_integrators : c.integrators)
       for (int segments : quick ? c.quick_segments : c.segments) {
         Setting s = c.defaults;
         s.formulation = formulation;

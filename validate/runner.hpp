@@ -19,7 +19,7 @@ struct Row {
 };
 
 struct RunOptions {
-  bool quick = false;  // Case::quick_segments instead of Case::segments
+  bool quick = false;  // Case::quick_segments (and quick_integrators) instead of the full lists
   // A relaxation shorter than min_timed_ms is run again, up to max_runs in
   // all, and the fastest run is reported: one run of a small model is too
   // short to time. The repeats must agree bit for bit (DESIGN: deterministic).

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "benchmark_models.hpp"
 #include "model/model.hpp"
 #include "physics/solver.hpp"
 
@@ -19,19 +20,11 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr std::uint8_t kFull = kLockTranslation | kLockRotation;
 
-// A straight cantilever along x from the origin, n segments, 6 DOF, root
-// fully locked.
-struct Cantilever {
-  Model m;
-  std::vector<ParticleId> ps;
-  BlockId beam;
-  Cantilever(int n, double L, const Section& s) {
-    for (int i = 0; i <= n; ++i) ps.push_back(m.add_particle(Vec3(L * i / n, 0, 0)));
-    beam = m.add_beam(ps, s);
-    m.set_lock(ps.front(), kFull);
-    m.set_beam_formulation(beam, 6);
-  }
-  ParticleId tip() const { return ps.back(); }
+using validate::BentCantilever;
+using validate::Cantilever;
+// The pin-ended elastica of test_elastica.cpp, 64 segments unless told.
+struct Strut : validate::Elastica {
+  explicit Strut(double theta0_deg, int n = 64) : Elastica(theta0_deg, n) {}
 };
 
 // The rotation angle of a frame about the axis `axis` (unit), for frames
@@ -40,39 +33,6 @@ double angle_about(const Quat& q, const Vec3& axis) {
   const Eigen::AngleAxisd aa(Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()));
   return aa.angle() * aa.axis().dot(axis);
 }
-
-// --- the pin-ended elastica of test_elastica.cpp, 6 DOF --------------------------
-
-struct Strut {
-  Model m;
-  std::vector<ParticleId> ps;
-  BlockId beam;
-  double exact_deflection = 0, exact_load = 0;
-
-  Strut(double theta0_deg, int n = 64) {
-    const double L = 10, EI = 1e5, EA = 1e8;
-    const double k = std::sin(theta0_deg * kPi / 360);
-    const double K = std::comp_ellint_1(k), E = std::comp_ellint_2(k);
-    const double chord = L * (2 * E / K - 1);
-    for (int i = 0; i <= n; ++i) ps.push_back(m.add_particle(Vec3(L * i / n, 0, 0)));
-    beam = m.add_beam(ps, Section{EA, EI, 0, 0});
-    const double amp = k * L / K;
-    for (int i = 0; i <= n; ++i) {
-      const double s = double(i) / n;
-      m.particles.position[ps[i]] = Vec3(chord * s, amp * std::sin(kPi * s), 0);
-    }
-    for (ParticleId p : ps) m.set_lock(p, kLockZ);
-    m.set_lock(ps.front(), kLockTranslation);
-    m.set_lock(ps.back(), kLockTranslation);
-    exact_deflection = k * L / K;
-    exact_load = EI * std::pow(2 * K / L, 2);
-  }
-  // The elastica buckles either way; both are the exact solution.
-  double deflection_error() const {
-    return std::abs(std::abs(m.particles.position[ps[ps.size() / 2]].y()) / exact_deflection - 1);
-  }
-  double load_error(const Solver& s) const { return std::abs(-s.reaction(ps.back()).x() / exact_load - 1); }
-};
 
 }  // namespace
 
@@ -101,36 +61,18 @@ TEST_CASE("6-DOF beam: a cantilever under an end moment M = 2 pi EI / L rolls in
 }
 
 TEST_CASE("6-DOF beam: Bathe & Bolourchi's 45-degree bend within 2% of Simo & Vu-Quoc") {
-  // R = 100 in, 8 elements, 1 x 1 in section, E = 1e7 psi, G = E/2 (EA = 1e7 lb,
-  // EI = E/12, GJ = G/6 lb in^2), 600 lb normal to the bend's plane at the tip.
-  // The bend starts at the origin along x and turns towards +y; its curved
-  // shape is its rest shape (appendix A.1b, no pre-stress).
-  const Vec3 reference(-23.48, -13.50, 53.37);
+  // The model: validate/benchmark_models.hpp.
+  const Vec3 reference = BentCantilever::kReference;
   for (Integrator integrator : {Integrator::Leapfrog, Integrator::RK4}) {
     const std::string name = integrator_name(integrator);
     CAPTURE(name);
-    const double R = 100;
-    const int n = 8;
-    Model m;
-    std::vector<ParticleId> ps;
-    for (int i = 0; i <= n; ++i) {
-      const double a = kPi / 4 * i / n;
-      ps.push_back(m.add_particle(Vec3(R * std::sin(a), R * (1 - std::cos(a)), 0)));
-    }
-    Section s{1e7, 1e7 / 12, 0, 0};
-    s.GJ = 0.5e7 / 6;
-    const BlockId b = m.add_beam(ps, s);
-    m.set_lock(ps.front(), kFull);
-    m.set_beam_formulation(b, 6);
-    m.release_beam_prestress(b);
-    const Vec3 start = m.particles.position[ps.back()];
-    m.set_load(ps.back(), Vec3(0, 0, 600));
-    Solver solver(m);
+    BentCantilever bend(8);
+    Solver solver(bend.m);
     solver.settings.integrator = integrator;
     const RunResult r = solver.run(1e-6, 200'000);
     REQUIRE(r.converged);
-    CHECK(m.check() == "");
-    const Vec3 u = m.particles.position[ps.back()] - start;
+    CHECK(bend.m.check() == "");
+    const Vec3 u = bend.displacement();
     MESSAGE("45-degree bend, " << name << ": tip displacement (" << u.x() << ", " << u.y() << ", " << u.z()
                                << ") in vs (-23.48, -13.50, 53.37); errors " << u.x() / reference.x() - 1 << ", "
                                << u.y() / reference.y() - 1 << ", " << u.z() / reference.z() - 1 << "; steps "

@@ -1,0 +1,96 @@
+#include "benchmark_models.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace tendril::validate {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr std::uint8_t kFullLock = kLockTranslation | kLockRotation;
+
+}  // namespace
+
+Elastica::Elastica(double theta0_deg, int n) {
+  const double L = 10, EI = 1e5, EA = 1e8;
+  const double k = std::sin(theta0_deg * kPi / 360);
+  const double K = std::comp_ellint_1(k), E = std::comp_ellint_2(k);
+  const double chord = L * (2 * E / K - 1);
+  exact_deflection = k * L / K;
+  exact_load = EI * std::pow(2 * K / L, 2);
+  for (int i = 0; i <= n; ++i) ps.push_back(m.add_particle(Vec3(L * i / n, 0, 0)));
+  beam = m.add_beam(ps, Section{EA, EI, 0, 0});
+  for (int i = 0; i <= n; ++i) {
+    const double s = double(i) / n;
+    m.particles.position[ps[i]] = Vec3(chord * s, exact_deflection * std::sin(kPi * s), 0);
+  }
+  for (ParticleId p : ps) m.set_lock(p, kLockZ);
+  m.set_lock(ps.front(), kLockTranslation);
+  m.set_lock(ps.back(), kLockTranslation);
+}
+
+double Elastica::deflection_error() const {
+  return std::abs(std::abs(m.particles.position[ps[ps.size() / 2]].y()) / exact_deflection - 1);
+}
+
+double Elastica::load_error(const Solver& s) const { return std::abs(-s.reaction(ps.back()).x() / exact_load - 1); }
+
+Cantilever::Cantilever(int n, double L, const Section& s) {
+  for (int i = 0; i <= n; ++i) ps.push_back(m.add_particle(Vec3(L * i / n, 0, 0)));
+  beam = m.add_beam(ps, s);
+  m.set_lock(ps.front(), kFullLock);
+  m.set_beam_formulation(beam, 6);
+}
+
+BentCantilever::BentCantilever(int n) {
+  const double R = 100;
+  for (int i = 0; i <= n; ++i) {
+    const double a = kPi / 4 * i / n;
+    ps.push_back(m.add_particle(Vec3(R * std::sin(a), R * (1 - std::cos(a)), 0)));
+  }
+  Section s{1e7, 1e7 / 12, 0, 0};
+  s.GJ = 0.5e7 / 6;
+  beam = m.add_beam(ps, s);
+  m.set_lock(ps.front(), kFullLock);
+  m.set_beam_formulation(beam, 6);
+  m.release_beam_prestress(beam);
+  start = m.particles.position[tip()];
+  m.set_load(tip(), Vec3(0, 0, 600));
+}
+
+double BentCantilever::error() const {
+  const Vec3 u = displacement();
+  double e = 0;
+  for (int k = 0; k < 3; ++k) e = std::max(e, std::abs(u[k] / kReference[k] - 1));
+  return e;
+}
+
+PrestressedRing::PrestressedRing(int n, int dofs) {
+  const double radius = 5, load = 1e4;
+  const int quadrant[4] = {n, 2 * n, 4 * n, 8 * n};
+  for (int q = 0; q < 4; ++q) {
+    node[q] = ParticleId(ps.size());  // an index into ps for now
+    for (int i = 0; i < quadrant[q]; ++i) {
+      const double a = kPi / 2 * (q + double(i) / quadrant[q]);
+      ps.push_back(m.add_particle(Vec3(radius * std::cos(a), radius * std::sin(a), 0)));
+    }
+  }
+  for (ParticleId& p : node) p = ps[p];
+  beam = m.add_beam(ps, Section{1e8, 1e5, 0, 0}, true);  // rest lengths: the chords, straight joints
+  if (dofs == 6) m.set_beam_formulation(beam, 6);
+  m.set_load(node[0], Vec3(0, 0, -load));
+  m.set_load(node[2], Vec3(0, 0, -load));
+  m.set_lock(node[1], kLockZ | kLockX | (dofs == 6 ? kLockRX : 0));
+  m.set_lock(node[3], kLockZ | kLockX);
+  m.set_lock(node[0], kLockY);
+}
+
+double PrestressedRing::drop(int node_number) const { return -m.particles.position[node[node_number - 1]].z(); }
+
+double PrestressedRing::error() const {
+  return std::max(std::abs(drop(1) / kReference - 1), std::abs(drop(3) / kReference - 1));
+}
+
+}  // namespace tendril::validate

@@ -1,0 +1,42 @@
+// A cantilever (L = 1 m, EI = 1 N m^2, EA = 10 kN, 6 DOF) under an end
+// moment M = 2 pi EI / L bends to the constant curvature M / EI = 2 pi / L:
+// a closed circle, the tip back on the root. The error is the tip-to-root
+// gap over L.
+#include <numbers>
+
+#include "benchmark_models.hpp"
+#include "case.hpp"
+
+namespace tendril::validate {
+
+namespace {
+
+Outcome run_circle(const Setting& setting) {
+  const double L = 1, EI = 1;
+  Cantilever c(setting.segments, L, Section{1e4, EI, 0, 0});
+  c.m.set_moment(c.tip(), Vec3(0, 0, 2 * std::numbers::pi * EI / L));
+  Solver solver(c.m);
+  solver.settings = setting.solver;
+  Outcome out = relax(solver, 1e-7, 2'000'000);  // 0.1 uN against EI / L^2 = 1 N
+  out.error = (c.m.particles.position[c.tip()] - c.m.particles.position[c.ps.front()]).norm() / L;
+  return out;
+}
+
+}  // namespace
+
+Case end_moment_circle_case() {
+  Case c;
+  c.name = "end_moment_circle";
+  c.reference = "cantilever under an end moment 2 pi EI / L (6 DOF): a closed circle; tip-to-root gap / L";
+  c.resolution = "segments of the cantilever";
+  c.formulations = {"beam-6dof"};
+  c.segments = {10, 20, 40, 80};
+  c.quick_segments = {10, 20};
+  c.defaults.formulation = "beam-6dof";
+  c.defaults.segments = 20;
+  c.tolerance = 0.01;
+  c.run = run_circle;
+  return c;
+}
+
+}  // namespace tendril::validate
