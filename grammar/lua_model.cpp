@@ -4,6 +4,8 @@
 #include "lua_model.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <initializer_list>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -113,6 +115,10 @@ Damping parse_damping(const std::string& name, const char* fn) {
   throw LuaArgError(std::string(fn) + ": damping must be \"kinetic\", \"viscous\" or \"none\", got \"" + name + "\"");
 }
 
+const std::initializer_list<const char*> kSettingKeys = {
+    "dt",       "damping",   "viscous",        "geometric_factor", "mass_factor", "gravity",
+    "integrator", "mass_mode", "vie_iterations", "vie_dt",           "mixed_switch"};
+
 void apply_settings(lua_State* L, int idx, Scene& s, const char* fn) {
   SolverSettings& st = s.solver.settings;
   st.dt = field_number(L, idx, "dt", fn, st.dt);
@@ -128,11 +134,20 @@ void apply_settings(lua_State* L, int idx, Scene& s, const char* fn) {
   if (auto i = parse_integrator(integrator)) st.integrator = *i;
   else
     key_error(fn, "integrator",
-              "must be \"leapfrog\", \"symplectic_euler\", \"velocity_verlet\", \"midpoint\" or \"rk4\", got \"" +
+              "must be \"leapfrog\", \"symplectic_euler\", \"velocity_verlet\", \"midpoint\", \"rk4\", \"vie\", "
+              "\"projective\" or \"mixed\", got \"" +
                   integrator + "\"");
   const std::string mass_mode = field_string(L, idx, "mass_mode", fn, mass_mode_name(st.mass_mode));
   if (auto m = parse_mass_mode(mass_mode)) st.mass_mode = *m;
   else key_error(fn, "mass_mode", "must be \"fictitious\" or \"physical\", got \"" + mass_mode + "\"");
+  const double iterations = field_number(L, idx, "vie_iterations", fn, st.vie_iterations);
+  if (!(iterations >= 1 && iterations <= 1000) || iterations != std::floor(iterations))
+    key_error(fn, "vie_iterations", "must be a whole number from 1 to 1000");
+  st.vie_iterations = int(iterations);
+  st.vie_dt = field_number(L, idx, "vie_dt", fn, st.vie_dt);
+  if (!(st.vie_dt >= 0) || !std::isfinite(st.vie_dt)) key_error(fn, "vie_dt", "must be >= 0 (0: dt)");
+  st.mixed_switch = field_number(L, idx, "mixed_switch", fn, st.mixed_switch);
+  if (!(st.mixed_switch > 0 && st.mixed_switch < 1)) key_error(fn, "mixed_switch", "must be in (0, 1)");
 }
 
 Scene& push_new_scene(lua_State* L) {
@@ -178,7 +193,8 @@ void record_settings(Scene& s) {
   s.record(std::string("settings dt=") + Trace::number(st.dt) + " damping=" + damping_name(st.damping) +
            " viscous=" + Trace::number(st.viscous) + " geometric_factor=" + Trace::number(st.geometric_factor) +
            " mass_factor=" + Trace::number(st.mass_factor) + " integrator=" + integrator_name(st.integrator) +
-           " mass_mode=" + mass_mode_name(st.mass_mode));
+           " mass_mode=" + mass_mode_name(st.mass_mode) + " vie_iterations=" + std::to_string(st.vie_iterations) +
+           " vie_dt=" + Trace::number(st.vie_dt) + " mixed_switch=" + Trace::number(st.mixed_switch));
   s.record("gravity " + Trace::vec(s.model.gravity));
 }
 
@@ -189,7 +205,7 @@ int l_new_model(lua_State* L) {
   const bool has_options = !lua_isnoneornil(L, 1);
   if (has_options) {
     check_table(L, 1, fn);
-    check_keys(L, 1, fn, {"dt", "damping", "viscous", "geometric_factor", "mass_factor", "gravity", "integrator", "mass_mode"});
+    check_keys(L, 1, fn, kSettingKeys);
   }
   Scene& s = push_new_scene(L);
   if (has_options) {
@@ -574,7 +590,7 @@ int l_settings(lua_State* L) {
   Scene& s = check_scene(L, fn);
   if (!lua_isnoneornil(L, 2)) {
     check_table(L, 2, fn);
-    check_keys(L, 2, fn, {"dt", "damping", "viscous", "geometric_factor", "mass_factor", "gravity", "integrator", "mass_mode"});
+    check_keys(L, 2, fn, kSettingKeys);
     apply_settings(L, 2, s, fn);
     record_settings(s);
   }
@@ -596,6 +612,14 @@ int l_settings(lua_State* L) {
   lua_setfield(L, -2, "integrator");
   lua_pushstring(L, mass_mode_name(st.mass_mode));
   lua_setfield(L, -2, "mass_mode");
+  lua_pushinteger(L, st.vie_iterations);
+  lua_setfield(L, -2, "vie_iterations");
+  lua_pushnumber(L, st.vie_dt);
+  lua_setfield(L, -2, "vie_dt");
+  lua_pushnumber(L, st.mixed_switch);
+  lua_setfield(L, -2, "mixed_switch");
+  lua_pushstring(L, s.solver.phase());
+  lua_setfield(L, -2, "phase");
   return 1;
 }
 

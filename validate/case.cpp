@@ -18,6 +18,12 @@ Outcome relax(Solver& solver, double tolerance, std::uint64_t max_steps) {
   return out;
 }
 
+std::vector<Integrator> all_integrators() {
+  std::vector<Integrator> out(kIntegrators.begin(), kIntegrators.end());
+  out.insert(out.end(), kConstraintIntegrators.begin(), kConstraintIntegrators.end());
+  return out;
+}
+
 double relative_error(double measured, double exact) { return std::abs(measured / exact - 1); }
 
 }  // namespace tendril::validate

@@ -40,6 +40,9 @@
 
 namespace tendril::validate {
 
+// The explicit integrators, then the constraint-based ones.
+std::vector<Integrator> all_integrators();
+
 // One point of a case's matrix.
 struct Setting {
   std::string formulation;  // one of Case::formulations
@@ -60,7 +63,8 @@ struct Case {
   std::string reference;  // what the error is measured against, in a line
   std::string resolution;  // what `segments` counts, e.g. "segments over the strut"
   std::vector<std::string> formulations;
-  std::vector<Integrator> integrators{kIntegrators.begin(), kIntegrators.end()};
+  // Every explicit and constraint-based integrator unless a case says otherwise.
+  std::vector<Integrator> integrators = all_integrators();
   std::vector<int> segments;        // the full run
   std::vector<int> quick_segments;  // --quick (CI); must hold the default's
   // --quick runs these integrators only (empty: all of `integrators`); for

@@ -288,6 +288,9 @@ std::string write_document(const Model& m, const SolverSettings& s) {
   w.attr("mass_factor", s.mass_factor);
   w.attr("integrator", integrator_name(s.integrator));
   w.attr("mass_mode", mass_mode_name(s.mass_mode));
+  w.attr("vie_iterations", unsigned(s.vie_iterations));
+  w.attr("vie_dt", s.vie_dt);
+  w.attr("mixed_switch", s.mixed_switch);
   w.close();
 
   w.open("gravity");
@@ -673,7 +676,10 @@ void Reader::read_solver(const tinyxml2::XMLElement* e, SolverSettings& s) const
   s.mass_factor = a.real("mass_factor", s.mass_factor);
   if (const char* name = a.raw("integrator")) {
     auto i = parse_integrator(name);
-    if (!i) a.bad("integrator", std::string("is \"") + name + "\"; expected leapfrog, symplectic_euler, velocity_verlet, midpoint or rk4");
+    if (!i)
+      a.bad("integrator", std::string("is \"") + name +
+                              "\"; expected leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective "
+                              "or mixed");
     s.integrator = *i;
   }
   if (const char* name = a.raw("mass_mode")) {
@@ -681,7 +687,13 @@ void Reader::read_solver(const tinyxml2::XMLElement* e, SolverSettings& s) const
     if (!mm) a.bad("mass_mode", std::string("is \"") + name + "\"; expected fictitious or physical");
     s.mass_mode = *mm;
   }
+  s.vie_iterations = int(a.real("vie_iterations", s.vie_iterations));
+  s.vie_dt = a.real("vie_dt", s.vie_dt);
+  s.mixed_switch = a.real("mixed_switch", s.mixed_switch);
   if (!(s.dt > 0)) a.bad("dt", "must be > 0");
+  if (!(s.vie_iterations >= 1)) a.bad("vie_iterations", "must be >= 1");
+  if (!(s.vie_dt >= 0)) a.bad("vie_dt", "must be >= 0");
+  if (!(s.mixed_switch > 0 && s.mixed_switch < 1)) a.bad("mixed_switch", "must be in (0, 1)");
   if (!(s.viscous >= 0)) a.bad("viscous", "must be >= 0");
   if (!(s.geometric_factor >= 0)) a.bad("geometric_factor", "must be >= 0");
   if (!(s.mass_factor >= 1)) a.bad("mass_factor", "must be >= 1");

@@ -257,6 +257,9 @@ void replay_trace(std::istream& in, const std::string& name, Model& m, Solver& s
             else if (key == "viscous") s.settings.viscous = x;
             else if (key == "geometric_factor") s.settings.geometric_factor = x;
             else if (key == "mass_factor") s.settings.mass_factor = x;
+            else if (key == "vie_iterations") s.settings.vie_iterations = int(x);
+            else if (key == "vie_dt") s.settings.vie_dt = x;
+            else if (key == "mixed_switch") s.settings.mixed_switch = x;
             else throw ModelError(r.where + ": unknown setting '" + key + "'");
           }
         }

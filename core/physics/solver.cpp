@@ -23,12 +23,17 @@ const char* integrator_name(Integrator i) {
     case Integrator::VelocityVerlet: return "velocity_verlet";
     case Integrator::Midpoint: return "midpoint";
     case Integrator::RK4: return "rk4";
+    case Integrator::VariationalImplicitEuler: return "vie";
+    case Integrator::ProjectiveDynamics: return "projective";
+    case Integrator::Mixed: return "mixed";
   }
   return "?";
 }
 
 std::optional<Integrator> parse_integrator(std::string_view name) {
   for (Integrator i : kIntegrators)
+    if (name == integrator_name(i)) return i;
+  for (Integrator i : kConstraintIntegrators)
     if (name == integrator_name(i)) return i;
   return std::nullopt;
 }
@@ -40,6 +45,12 @@ int force_evaluations_per_step(Integrator i) {
     case Integrator::VelocityVerlet:
     case Integrator::Midpoint: return 2;
     case Integrator::RK4: return 4;
+    // Constraint-based: one evaluation for the residual, then one local step
+    // per iteration (SolverSettings::vie_iterations); the explicit phase of
+    // Mixed takes one.
+    case Integrator::VariationalImplicitEuler:
+    case Integrator::ProjectiveDynamics:
+    case Integrator::Mixed: return 1;
   }
   return 0;
 }
@@ -48,7 +59,10 @@ double fictitious_mass_scale(Integrator i) {
   switch (i) {
     case Integrator::Leapfrog:
     case Integrator::VelocityVerlet:
-    case Integrator::RK4: return 1;
+    case Integrator::RK4:
+    case Integrator::VariationalImplicitEuler:
+    case Integrator::ProjectiveDynamics:
+    case Integrator::Mixed: return 1;
     case Integrator::SymplecticEuler: return 2;
     case Integrator::Midpoint: return 48;
   }
@@ -69,6 +83,17 @@ std::optional<MassMode> parse_mass_mode(std::string_view name) {
   return std::nullopt;
 }
 
+const char* Solver::phase() const {
+  if (settings.integrator != Integrator::Mixed) return integrator_name(settings.integrator);
+  return mixed_implicit_ ? "vie" : "leapfrog";
+}
+
+namespace {
+bool implicit(Integrator i) {
+  return i == Integrator::VariationalImplicitEuler || i == Integrator::ProjectiveDynamics || i == Integrator::Mixed;
+}
+}  // namespace
+
 void Solver::compute_forces() {
   Particles& P = model_.particles;
   accumulate_forces(P.position.data(), P.orientation.data(), P.force.data(), P.stiffness.data(), P.torque.data(),
@@ -80,15 +105,19 @@ void Solver::step() {
   size_scratch();
   compute_forces();
   prepare_masses();
+  if (settings.integrator != Integrator::Mixed) mixed_implicit_ = false, mixed_peak_ = 0;
   switch (settings.integrator) {
     case Integrator::Leapfrog: integrate_leapfrog(); break;
     case Integrator::SymplecticEuler: integrate_symplectic_euler(); break;
     case Integrator::VelocityVerlet: integrate_velocity_verlet(); break;
     case Integrator::Midpoint: integrate_midpoint(); break;
     case Integrator::RK4: integrate_rk4(); break;
+    case Integrator::VariationalImplicitEuler: integrate_vie(); break;
+    case Integrator::ProjectiveDynamics: integrate_projective(); break;
+    case Integrator::Mixed: integrate_mixed(); return;  // counts its own step and time
   }
   ++steps_;
-  time_ += settings.dt;
+  time_ += implicit(settings.integrator) ? vie_dt() : settings.dt;
 }
 
 void Solver::size_scratch() {
@@ -98,6 +127,10 @@ void Solver::size_scratch() {
   if (rotating && inertia_.size() != n) inertia_.resize(n);
   const Integrator i = settings.integrator;
   if (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) return;
+  if (implicit(i) && x0_.size() != n) {
+    x0_.resize(n);
+    r0_.resize(n);
+  }
   if (xs_.size() != n) {
     xs_.resize(n);
     Fs_.resize(n);

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -30,11 +31,21 @@ const char* damping_name(Damping d);
 // the model between steps), Midpoint 2, RK4 4 (eq. 3.13-3.15).
 // Leapfrog's and Symplectic Euler's velocities lag the positions by half a
 // step; the others' are at the step's end. Switching converts them.
-enum class Integrator { Leapfrog, SymplecticEuler, VelocityVerlet, Midpoint, RK4 };
+// The constraint-based solvers (thesis 3.3.5, vie.cpp, projective.cpp,
+// mixed.cpp) take vie_iterations local-global iterations per step:
+// VariationalImplicitEuler averages the projections per particle (eq. 3.63),
+// ProjectiveDynamics solves the prefactored global system instead, Mixed runs
+// Leapfrog far from equilibrium and VIE near it (5.4.2.2).
+enum class Integrator { Leapfrog, SymplecticEuler, VelocityVerlet, Midpoint, RK4, VariationalImplicitEuler,
+                        ProjectiveDynamics, Mixed };
+// The explicit integrators (eq. 3.9-3.25).
 inline constexpr std::array<Integrator, 5> kIntegrators = {Integrator::Leapfrog, Integrator::SymplecticEuler,
                                                           Integrator::VelocityVerlet, Integrator::Midpoint,
                                                           Integrator::RK4};
-// "leapfrog", "symplectic_euler", "velocity_verlet", "midpoint", "rk4".
+inline constexpr std::array<Integrator, 2> kConstraintIntegrators = {Integrator::VariationalImplicitEuler,
+                                                                     Integrator::Mixed};
+// "leapfrog", "symplectic_euler", "velocity_verlet", "midpoint", "rk4",
+// "vie", "projective", "mixed".
 const char* integrator_name(Integrator i);
 std::optional<Integrator> parse_integrator(std::string_view name);
 int force_evaluations_per_step(Integrator i);
@@ -71,6 +82,15 @@ struct SolverSettings {
   // (the discrete peak). Velocities are zeroed.
   Integrator integrator = Integrator::Leapfrog;
   MassMode mass_mode = MassMode::Fictitious;
+  // Constraint-based solvers: local-global iterations per step, and their
+  // time step (0: dt). Fictitious masses always follow eq. 3.4 at dt, so a
+  // vie_dt above dt weakens the momentum term M / vie_dt^2 of eq. 3.57.
+  int vie_iterations = 4;
+  double vie_dt = 0;
+  // Mixed: VIE once the residual fell below mixed_switch times its peak in
+  // the Leapfrog phase; Leapfrog again when it grows above twice the
+  // residual VIE started from (a load or topology change).
+  double mixed_switch = 0.01;
 };
 
 struct RunResult {
@@ -84,6 +104,8 @@ struct RunResult {
 struct NumericalError : ModelError {
   using ModelError::ModelError;
 };
+
+class ProjectiveSystem;  // projective.hpp
 
 class Solver {
  public:
@@ -110,7 +132,9 @@ class Solver {
   std::uint64_t steps() const { return steps_; }
   double time() const { return time_; }
   std::uint64_t kinetic_resets() const { return resets_; }
-  std::uint64_t force_evaluations() const { return evaluations_; }
+  std::uint64_t force_evaluations() const { return evaluations_; }  // a local step counts as one
+  // Mixed: "leapfrog" or "vie", the phase the last step ran in; else the integrator's name.
+  const char* phase() const;
   // The force the supports exert on a locked particle (minus the residual
   // force along its locked axes) at the start of the last step.
   Vec3 reaction(ParticleId p) const;
@@ -138,6 +162,13 @@ class Solver {
   void integrate_midpoint();
   void integrate_rk4();
   void synchronize_velocities();  // Leapfrog's v(t - dt/2) -> v(t)
+  // vie.cpp, projective.cpp, mixed.cpp
+  double vie_dt() const { return settings.vie_dt > 0 ? settings.vie_dt : settings.dt; }
+  void integrate_vie();
+  void integrate_projective();
+  void integrate_mixed();
+  void start_implicit_step(double dt);  // x0 of eq. 3.57 into x0_, first guess into xs_, qs_
+  void finish_implicit_step(double dt);  // velocities (eq. 3.64), kinetic damping, commit
   // Ends a step of a synchronous integrator whose new state is (xn, vn) and,
   // for rotating particles, (qn, wn).
   void commit(const Vec3* xn, const Vec3* vn, const Quat* qn, const Vec3* wn, double ke, double momentum2);
@@ -166,6 +197,10 @@ class Solver {
   std::vector<Vec3> Ts_, ws_;       // stage torques, angular velocities
   std::vector<double> Ks_;          // stage rotational stiffnesses (unused but written)
   std::vector<Vec3> sum_r_, sum_w_;  // RK4's sums of L_R and K_R (eq. 3.22-3.24)
+  std::vector<Vec3> x0_, r0_;        // implicit: x0 of eq. 3.57, and its rotation vector from the frame
+  std::shared_ptr<ProjectiveSystem> projective_;  // projective.hpp, built on first use
+  bool mixed_implicit_ = false;      // Mixed: in its VIE phase
+  double mixed_peak_ = 0, mixed_entry_ = 0;
 };
 
 }  // namespace tendril

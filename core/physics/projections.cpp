@@ -1,0 +1,76 @@
+// Projections of every element (projections.hpp), accumulated per particle.
+#include "physics/projections.hpp"
+
+#include "physics/element_forces.hpp"
+
+namespace tendril {
+
+namespace {
+
+inline void add(const ProjectionSums& s, ParticleId p, double K, const Vec3& pull) {
+  s.weight[p] += K;
+  s.pull[p] += pull;
+}
+
+// Bar or cable: both ends move along the bar, halfway each, to the length
+// at which its tension T (eq. 3.32) vanishes; K (p - x) = T along the bar.
+void project_bar(const Bar& b, const Vec3* x, double gf, const ProjectionSums& s) {
+  const Vec3 d = x[b.j] - x[b.i];
+  const double l = d.norm();
+  const double k = b.EA / b.rest_length;
+  double T = b.prestress + k * (l - b.rest_length);
+  if (b.tension_only && T < 0) T = 0;  // slack: l <= L holds, p = x
+  const double K = 2 * (k + (l > 0 && T > 0 ? gf * T / l : 0.0));
+  const Vec3 f = l > 0 ? Vec3((T / l) * d) : Vec3::Zero();
+  add(s, b.i, K, f);
+  add(s, b.j, K, -f);
+}
+
+}  // namespace
+
+void accumulate_projections(const Model& m, const Vec3* x, const Quat* q, double gf, const ProjectionSums& s) {
+  const Particles& P = m.particles;
+  const std::size_t n = P.capacity();
+  for (std::size_t p = 0; p < n; ++p) {
+    s.pull[p].setZero();
+    s.weight[p] = 0;
+  }
+  for (ParticleId p : P.rotational.raw()) {
+    s.turn[p].setZero();
+    s.rot_weight[p] = 0;
+  }
+  const std::uint8_t* active = P.active.data();
+  for (const Bar& b : m.bars.items)
+    if (active[b.i] | active[b.j]) project_bar(b, x, gf, s);
+  for (const Hinge& h : m.hinges.items) {
+    if (!(active[h.i] | active[h.j] | active[h.k])) continue;
+    const HingeForces f = hinge_forces(h, x);
+    add(s, h.i, f.ka, f.fi);
+    add(s, h.k, f.kb, f.fk);
+    add(s, h.j, f.ka + f.kb, -(f.fi + f.fk));
+  }
+  for (const Beam6& b : m.beam6s.items) {
+    if (!(active[b.i] | active[b.j])) continue;
+    const Beam6Ends e = beam6_ends(b, x, q, gf);
+    add(s, b.i, 2 * e.k, -e.fj);
+    add(s, b.j, 2 * e.k, e.fj);
+    s.rot_weight[b.i] += 2 * e.kr;
+    s.rot_weight[b.j] += 2 * e.kr;
+    s.turn[b.i] += e.ta;
+    s.turn[b.j] += e.tb;
+  }
+  for (const RotationalJoint& jt : m.joints.items) {
+    ParticleId nb[4];
+    Vec3 target[4];
+    if (!m.joint_neighbours(jt.particle, nb) || !joint_targets(jt, nb, x, target)) continue;
+    Vec3 sum = Vec3::Zero();
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 f = jt.stiffness * (target[k] - x[nb[k]]);
+      add(s, nb[k], 2 * jt.stiffness, f);
+      sum += f;
+    }
+    add(s, jt.particle, 8 * jt.stiffness, -sum);
+  }
+}
+
+}  // namespace tendril
