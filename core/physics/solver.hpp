@@ -165,6 +165,9 @@ class Solver {
   // vie.cpp, projective.cpp, mixed.cpp
   double vie_dt() const { return settings.vie_dt > 0 ? settings.vie_dt : settings.dt; }
   void integrate_vie();
+  // The projections of every element at (x, q): pulls into Fs_, weights into
+  // Ss_, turns into Ts_ and rotational weights into Ks_.
+  void local_step(const Vec3* x, const Quat* q);
   void integrate_projective();
   void integrate_mixed();
   void start_implicit_step(double dt);  // x0 of eq. 3.57 into x0_, first guess into xs_, qs_
@@ -197,6 +200,7 @@ class Solver {
   std::vector<Vec3> Ts_, ws_;       // stage torques, angular velocities
   std::vector<double> Ks_;          // stage rotational stiffnesses (unused but written)
   std::vector<Vec3> sum_r_, sum_w_;  // RK4's sums of L_R and K_R (eq. 3.22-3.24)
+  std::vector<double> cst_weight_;   // local step: the CST stiffnesses
   std::vector<Vec3> x0_, r0_;        // implicit: x0 of eq. 3.57, and its rotation vector from the frame
   std::shared_ptr<ProjectiveSystem> projective_;  // projective.hpp, built on first use
   bool mixed_implicit_ = false;      // Mixed: in its VIE phase

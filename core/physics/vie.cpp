@@ -19,6 +19,7 @@
 // Each step evaluates the forces once at its start (the residual, and S for
 // the fictitious masses of eq. 3.4 at dt) and counts every local step as one
 // more evaluation.
+#include <algorithm>
 #include <cmath>
 
 #include "model/frames.hpp"
@@ -101,6 +102,19 @@ void Solver::finish_implicit_step(double dt) {
   commit(xs_.data(), vs_.data(), qs_.data(), ws_.data(), ke, momentum2 * (settings.dt * settings.dt) / (dt * dt));
 }
 
+void Solver::local_step(const Vec3* x, const Quat* q) {
+  accumulate_projections(model_, x, q, settings.geometric_factor, {Fs_.data(), Ss_.data(), Ts_.data(), Ks_.data()});
+  ++evaluations_;
+  if (model_.csts.items.empty()) return;
+  // CST membranes (cst_forces.cpp) project each corner by its force over
+  // twice its eq. 3.40 stiffness, as a bar does.
+  const std::size_t n = model_.particles.capacity();
+  if (cst_weight_.size() != n) cst_weight_.resize(n);
+  std::fill(cst_weight_.begin(), cst_weight_.end(), 0.0);
+  accumulate_cst_forces(x, Fs_.data(), cst_weight_.data());
+  for (std::size_t p = 0; p < n; ++p) Ss_[p] += 2 * cst_weight_[p];
+}
+
 void Solver::integrate_vie() {
   const double dt = vie_dt();
   start_implicit_step(dt);
@@ -109,10 +123,8 @@ void Solver::integrate_vie() {
   const std::uint8_t* lock = P.lock.data();
   const std::size_t n = P.capacity();
   const double inv_dt2 = 1 / (dt * dt);
-  const ProjectionSums sums{Fs_.data(), Ss_.data(), Ts_.data(), Ks_.data()};
   for (int it = 0; it < settings.vie_iterations; ++it) {
-    accumulate_projections(model_, xs_.data(), qs_.data(), settings.geometric_factor, sums);  // local step
-    ++evaluations_;
+    local_step(xs_.data(), qs_.data());
     for (std::size_t p = 0; p < n; ++p) {  // global step, eq. 3.63 with the momentum term
       if (!active[p]) continue;
       const double m = mass_[p] * inv_dt2;
