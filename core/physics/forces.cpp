@@ -3,8 +3,10 @@
 // (eq. 3.41-3.43) and 6-DOF beams (eq. 3.44-3.50). The integrators evaluate
 // them at the step's positions and at their intermediate stages.
 #include <algorithm>
+#include <cmath>
 
 #include "physics/element_forces.hpp"
+#include "physics/numerical_errors.hpp"
 #include "physics/solver.hpp"
 
 namespace tendril {
@@ -44,6 +46,8 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
   for (const Hinge& h : model_.hinges.items) {
     if (!(active[h.i] | active[h.j] | active[h.k])) continue;
     const HingeForces f = hinge_forces(h, x);
+    if (!std::isfinite(f.ka + f.kb)) [[unlikely]]
+      throw_degenerate_hinge(model_, h, x);  // a zero-length link (coincident particles): stop, naming them
     S[h.j] += f.ka + f.kb;
     F[h.i] += f.fi;
     F[h.k] += f.fk;

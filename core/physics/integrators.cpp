@@ -3,8 +3,11 @@
 // step's start (Solver::step) and ends with the kinetic-energy bookkeeping of
 // eq. 3.28. Locked axes have zero acceleration and zero velocity. The
 // multi-stage methods evaluate their stages on scratch buffers and write the
-// model only once every stage was finite, so a NumericalError leaves
-// positions, frames and velocities as they were.
+// model only once every stage and the new state were finite, so a
+// NumericalError leaves positions, frames and velocities as they were.
+// Leapfrog and Symplectic Euler kick in place: a kick that overflows (a time
+// step beyond the stability limit) resets the velocities before it throws;
+// positions and frames stay as they were.
 // Rotation mirrors translation with x -> R, v -> w, F/M -> T/I and the drift
 // x + h v -> R_T(h w) R (eq. 3.16-3.17); it runs over the rotating particles.
 #include <algorithm>
@@ -12,6 +15,7 @@
 
 #include "model/frames.hpp"
 #include "physics/free_axes.hpp"
+#include "physics/numerical_errors.hpp"
 #include "physics/solver.hpp"
 
 namespace tendril {
@@ -63,6 +67,12 @@ void Solver::kick_drift(bool whole_kick) {
     w[p] = (keep * w[p] + (first * B * dt / I) * T[p]).cwiseProduct(free_rotation_axes(lock[p]));  // eq. 3.21 / 3.27
     ke += I * w[p].squaredNorm();                                                                // eq. 3.28
     momentum2 = std::max(momentum2, I * I * w[p].squaredNorm());
+  }
+  if (!std::isfinite(ke)) [[unlikely]] {  // beyond the stability limit: the kick overflowed
+    const NumericalError e =
+        non_finite_motion(model_, nullptr, v, w, settings, steps_, "velocities were reset, no particle was moved");
+    reset_motion();
+    throw e;
   }
   Vec3* x = P.position.data();
   Quat* R = P.orientation.data();
@@ -332,6 +342,14 @@ void Solver::commit(const Vec3* xn, const Vec3* vn, const Quat* qn, const Vec3* 
   Vec3 *pos = P.position.data(), *vel = P.velocity.data(), *w = P.angular_velocity.data();
   Quat* R = P.orientation.data();
   const std::vector<ParticleId>& rotating = P.rotational.raw();
+  bool finite = std::isfinite(ke);
+  for (std::size_t p = 0; p < n && finite; ++p)
+    if (active[p]) finite = xn[p].allFinite() && vn[p].allFinite();
+  for (ParticleId p : rotating)
+    if (active[p]) finite = finite && qn[p].coeffs().allFinite() && wn[p].allFinite();
+  if (!finite) [[unlikely]]  // checked before anything is written: the model stays as it was
+    throw non_finite_motion(model_, xn, vn, rotating.empty() ? nullptr : wn, settings, steps_,
+                            "no particle was moved");
   if (kinetic_peak_passed(ke)) {  // stay at the step's start: the discrete peak
     for (std::size_t p = 0; p < n; ++p)
       if (active[p]) vel[p].setZero();

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "physics/free_axes.hpp"
+#include "physics/numerical_errors.hpp"
 
 namespace tendril {
 
@@ -163,8 +164,8 @@ void Solver::prepare_masses() {
   for (std::size_t p = 0; p < n; ++p) {
     if (!P.active[p]) continue;
     if (!P.force[p].allFinite() || !std::isfinite(P.stiffness[p]))
-      throw NumericalError("solver: the force on particle " + std::to_string(p) + " is not finite at step " +
-                           std::to_string(steps_) + "; no particle was moved");
+      throw NumericalError("solver: the force or stiffness on " + describe_particle(model_, ParticleId(p)) +
+                           " is not finite at step " + std::to_string(steps_) + "; no particle was moved");
     const Vec3 free = free_axes(P.lock[p]);
     double M;
     if (physical) {
@@ -201,7 +202,7 @@ void Solver::prepare_masses() {
     for (ParticleId p : P.rotational.raw()) {
       if (!P.active[p]) continue;
       if (!P.torque[p].allFinite() || !std::isfinite(P.rot_stiffness[p]))
-        throw NumericalError("solver: the torque on particle " + std::to_string(p) + " is not finite at step " +
+        throw NumericalError("solver: the torque on " + describe_particle(model_, p) + " is not finite at step " +
                              std::to_string(steps_) + "; no particle was moved");
       const Vec3 free = free_rotation_axes(P.lock[p]);
       if (physical) {
@@ -232,14 +233,14 @@ void Solver::stage_forces() {
   for (std::size_t p = 0; p < P.capacity(); ++p) {
     if (!P.active[p]) continue;
     if (!Fs_[p].allFinite() || !xs_[p].allFinite())
-      throw NumericalError("solver: the force on particle " + std::to_string(p) + " is not finite at a " +
+      throw NumericalError("solver: the force on " + describe_particle(model_, ParticleId(p)) + " is not finite at a " +
                            integrator_name(settings.integrator) + " stage of step " + std::to_string(steps_) +
                            "; no particle was moved");
   }
   for (ParticleId p : P.rotational.raw()) {
     if (!P.active[p]) continue;
     if (!Ts_[p].allFinite() || !qs_[p].coeffs().allFinite())
-      throw NumericalError("solver: the torque on particle " + std::to_string(p) + " is not finite at a " +
+      throw NumericalError("solver: the torque on " + describe_particle(model_, p) + " is not finite at a " +
                            integrator_name(settings.integrator) + " stage of step " + std::to_string(steps_) +
                            "; no particle was moved");
   }
