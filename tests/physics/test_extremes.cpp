@@ -209,6 +209,7 @@ TEST_CASE("extremes: a tiny time step follows the exact oscillation with each in
       case Integrator::SymplecticEuler: predicted = h / 2; break;
       case Integrator::Midpoint: predicted = steps * h * h * h / 6; break;
       case Integrator::RK4: predicted = 0; break;
+      default: FAIL("not an explicit integrator");
     }
     Chain c(amplitude);
     Solver s(c.m);
