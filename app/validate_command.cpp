@@ -101,14 +101,7 @@ int run_validate(int argc, char** argv) {
   }
   if (plot) std::printf("\nplots: %s/<case>.png\n", plots.c_str());
   if (!failed_defaults.empty()) {
-    for (const Row& r : failed_defaults) {
-      const std::string why = !r.failure.empty()     ? "failed: " + r.failure
-                              : !r.outcome.converged ? std::string("did not converge")
-                                                     : "error " + percent(r.outcome.error) + " % > tolerance " +
-                                                           percent(r.tolerance) + " %";
-      std::fprintf(stderr, "tendril: validate: %s under its default settings (%s, %s, %d segments): %s\n",
-                   r.case_name.c_str(), r.integrator.c_str(), r.formulation.c_str(), r.segments, why.c_str());
-    }
+    for (const Row& r : failed_defaults) std::fprintf(stderr, "tendril: validate: %s\n", default_failure(r).c_str());
     return 1;
   }
   std::printf("\nevery case within its tolerance under its default settings\n");

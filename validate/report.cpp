@@ -192,7 +192,7 @@ std::string plot(const Case& c, const std::vector<Row>& rows, const std::string&
       << "set ylabel 'error against the reference [%]'\n"
       << "set grid xtics ytics lc rgb '#dddddd'\n"
       << "set key outside right top noenhanced\n"
-      << "set label 1 " << gnuplot_quote("point labels: " + c.resolution) << " at screen 0.77, screen 0.08 font 'sans,9'\n"
+      << "set label 1 " << gnuplot_quote("point labels: " + c.resolution) << " at screen 0.98, screen 0.08 right font 'sans,9'\n"
       << "plot \\\n";
     for (std::size_t i = 0; i < series.size(); ++i) {
       const Row& first = *points[series[i]].front();

@@ -3,9 +3,23 @@
 #include <algorithm>
 #include <exception>
 
+#include "report.hpp"
+
 namespace tendril::validate {
 
 bool Row::passes() const { return failure.empty() && outcome.converged && outcome.error <= tolerance; }
+
+std::string Row::why_not() const {
+  if (!failure.empty()) return "failed: " + failure;
+  if (!outcome.converged) return "did not converge";
+  if (!(outcome.error <= tolerance)) return "error " + percent(outcome.error) + " % > tolerance " + percent(tolerance) + " %";
+  return "";
+}
+
+std::string default_failure(const Row& r) {
+  return r.case_name + " under its default settings (" + r.integrator + ", " + r.formulation + ", " +
+         std::to_string(r.segments) + " segments): " + r.why_not();
+}
 
 std::vector<Setting> matrix(const Case& c, bool quick) {
   std::vector<Setting> out;

@@ -16,6 +16,9 @@ struct Row {
   std::string failure;   // what the run threw, or why it cannot be trusted
   // A default row passes when it ran, converged and is within tolerance.
   bool passes() const;
+  // Why it does not pass: "failed: ...", "did not converge" or
+  // "error 2.1 % > tolerance 2 %"; "" when it passes.
+  std::string why_not() const;
 };
 
 struct RunOptions {
@@ -32,5 +35,8 @@ struct RunOptions {
 std::vector<Setting> matrix(const Case& c, bool quick);
 bool is_default(const Case& c, const Setting& s);
 Row run_setting(const Case& c, const Setting& s, const RunOptions& options);
+// What `tendril validate` prints on stderr for a default row that does not
+// pass (and then exits with 1): the case, its default settings and why.
+std::string default_failure(const Row& r);
 
 }  // namespace tendril::validate

@@ -4,7 +4,7 @@
 // (-23.48, -13.50, 53.37) in, the largest of the three components' errors.
 // Their 8 elements are the default; the reference is itself a converged
 // finite-element result, so finer meshes show how far 8 elements are from
-// it.
+// it (32 elements: 0.79 %, measured; Midpoint needed 955 000 steps there).
 #include "benchmark_models.hpp"
 #include "case.hpp"
 
@@ -31,7 +31,7 @@ Case bathe_bolourchi_case() {
       "(-23.48, -13.50, 53.37) in; the largest component error";
   c.resolution = "elements of the bend";
   c.formulations = {"beam-6dof"};
-  c.segments = {4, 8, 16, 32};
+  c.segments = {4, 8, 16};
   c.quick_segments = {8, 16};
   c.defaults.formulation = "beam-6dof";
   c.defaults.segments = 8;

@@ -7,7 +7,11 @@
 // Midpoint is left out: on this ring it did not converge within 2 million
 // steps at 120 segments (measured: 17 s with 3 DOF, 99 s with 6 DOF), its
 // fictitious masses being 48 times Leapfrog's (physics/solver.hpp) and the
-// saddle's swing about the axis 2-4 soft.
+// saddle's swing about the axis 2-4 soft. At n = 16 (240 segments) both
+// formulations drop 2.407-2.412 m: the n = 8 figure is 0.5 % above the
+// converged answer, and the reference is for n = 8.
+#include <vector>
+
 #include "benchmark_models.hpp"
 #include "case.hpp"
 
@@ -34,9 +38,9 @@ Case prestressed_ring_case() {
       "Adriaenssens' 2.42 m for n = 8; the larger error of the drops of nodes 1 and 3";
   c.resolution = "segments of the ring (15 n)";
   c.formulations = {"beam-3dof", "beam-6dof"};
-  c.integrators = {Integrator::Leapfrog, Integrator::SymplecticEuler, Integrator::VelocityVerlet, Integrator::RK4};
+  std::erase(c.integrators, Integrator::Midpoint);
   c.quick_integrators = {Integrator::Leapfrog};
-  c.segments = {30, 60, 120, 240};
+  c.segments = {30, 60, 120};  // 240 costs a minute and moves the error away from the n = 8 reference
   c.quick_segments = {30, 120};
   c.defaults.formulation = "beam-3dof";
   c.defaults.segments = 120;  // n = 8, the published discretisation
