@@ -312,13 +312,10 @@ int main(int argc, char** argv) {
     std::size_t nodes = 0;
     for (const auto& loop : b.loops) nodes += loop.size();
     std::optional<Figures> paved;
-    if (b.loops.size() > 1) {
-      t.add(missing(b.name, "paving", nodes));
-      notes.push_back(b.name + ": paving n/a: it paves the inside of one loop (no holes)");
-    } else {
+    {
       try {
         const auto t0 = Clock::now();
-        const QuadMesh mesh = paving(b.loops[0]);
+        const QuadMesh mesh = paving(b.loops[0], {b.loops.begin() + 1, b.loops.end()});
         const double seconds = seconds_since(t0);
         paved = measure(mesh.positions, mesh.quads, {});
         paved->seconds = seconds;

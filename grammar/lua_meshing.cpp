@@ -92,16 +92,43 @@ void record_patch(Scene& s, const meshing::CommittedPatch& c, const Section& sec
   s.record(line);
 }
 
-// m:pave{particles = {...}, EA =, prestress =, line_mass =}: rule 20.
+// holes = {{...}, {...}}: a list of particle lists (may be empty).
+std::vector<std::vector<ParticleId>> field_holes(lua_State* L, int idx, Scene& s, const char* fn) {
+  std::vector<std::vector<ParticleId>> out;
+  lua_getfield(L, idx, "holes");
+  const int t = lua_gettop(L);
+  try {
+    if (!lua_isnil(L, t)) {
+      if (!lua_istable(L, t)) key_error(fn, "holes", "must be a list of particle lists");
+      const lua_Integer n = lua_Integer(lua_rawlen(L, t));
+      for (lua_Integer i = 1; i <= n; ++i) {
+        lua_rawgeti(L, t, i);
+        if (!lua_istable(L, -1))
+          key_error(fn, "holes", "must be a list of particle lists (item " + std::to_string(i) + " is not a list)");
+        out.push_back(check_particle_list(L, lua_gettop(L), s, fn));
+        lua_pop(L, 1);
+      }
+    }
+  } catch (...) {
+    lua_settop(L, t - 1);
+    throw;
+  }
+  lua_settop(L, t - 1);
+  return out;
+}
+
+// m:pave{particles = {...}, holes = {{...}, ...}, EA =, prestress =, line_mass =}:
+// rule 20, optionally with holes.
 int l_pave(lua_State* L) {
   const char* fn = "pave";
   Scene& s = check_scene(L, fn);
   JournalScope record(s, fn, describe_args(L, 2, lua_gettop(L)));
   check_table(L, 2, fn);
-  check_keys(L, 2, fn, {"particles", "EA", "E", "A", "prestress", "line_mass"});
+  check_keys(L, 2, fn, {"particles", "holes", "EA", "E", "A", "prestress", "line_mass"});
   const Section sec = read_patch_section(L, 2, fn, {}, true);
   const std::vector<ParticleId> loop = field_particles(L, 2, "particles", s, fn);
-  const auto c = as_method(fn, "paving", [&] { return meshing::patch_by_paving(s.model, loop, sec); });
+  const auto holes = field_holes(L, 2, s, fn);
+  const auto c = as_method(fn, "paving", [&] { return meshing::patch_by_paving(s.model, loop, holes, sec); });
   record_patch(s, c, sec);
   push_block(L, s, c.patch);
   record.done();

@@ -22,7 +22,20 @@ namespace tendril::meshing {
 // the simple paver cannot advance.
 QuadMesh paving(const std::vector<Vec3>& loop, const PavingOptions& options = {});
 
+// A domain with holes: the outer loop (at least 8 points) and inner loops (at
+// least 3 points each, either orientation), projected on the outer loop's
+// best-fit plane. Vertices are the outer loop's, then each hole's, unmoved.
+// Throws ModelError as above, and when the total count is odd, a hole
+// intersects itself, touches or crosses the outer loop or another hole, lies
+// outside the outer loop or inside another hole (exact predicates).
+QuadMesh paving(const std::vector<Vec3>& outer, const std::vector<std::vector<Vec3>>& holes,
+                const PavingOptions& options = {});
+
 CommittedPatch patch_by_paving(Model& m, const std::vector<ParticleId>& loop, const Section& s,
+                               const PavingOptions& options = {});
+// The patch's boundary is the outer loop and every hole's loop.
+CommittedPatch patch_by_paving(Model& m, const std::vector<ParticleId>& outer,
+                               const std::vector<std::vector<ParticleId>>& holes, const Section& s,
                                const PavingOptions& options = {});
 
 }  // namespace tendril::meshing

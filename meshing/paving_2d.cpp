@@ -1,35 +1,59 @@
 #include "paving_2d.hpp"
 
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <string>
+
 #include "paving_paver.hpp"
 
 namespace tendril::meshing {
 namespace detail {
 
-Paver::Paver(const std::vector<Vec2>& loop, const PavingOptions& o) : pts_(loop), n_(loop.size()), opt_(o) {
+Paver::Paver(const std::vector<Vec2>& points, std::vector<std::vector<Index>> fronts, const PavingOptions& o)
+    : pts_(points), fronts0_(std::move(fronts)), n_(points.size()), opt_(o) {
   for (Index i = 0; i < n_; ++i) parent_.push_back(i);
   double perimeter = 0;
-  for (std::size_t i = 0; i < n_; ++i) perimeter += (loop[(i + 1) % n_] - loop[i]).norm();
+  for (const std::vector<Index>& f : fronts0_)
+    for (std::size_t i = 0; i < f.size(); ++i) perimeter += (pts_[f[(i + 1) % f.size()]] - pts_[f[i]]).norm();
   h_ = perimeter / double(n_);
 }
 
 Mesh2 Paver::run() {
-  std::vector<Index> front(n_);
-  for (Index i = 0; i < n_; ++i) front[i] = i;
-  for (int row = 0; front.size() > 2; ++row) {  // 2 or fewer: zipped shut
+  // Regions still to pave, each bounded by its fronts (an outer one first).
+  // The domain is one region; a front split across a narrow neck becomes two.
+  pending_ = {fronts0_};
+  int row = 0;
+  while (!pending_.empty()) {
+    Fronts fronts = std::move(pending_.back());
+    pending_.pop_back();
+    pave_fronts(fronts, row);  // until the holes' fronts have joined the outer one
+    pave_front(fronts.front(), row);
+  }
+  return finish();
+}
+
+Paver::Fronts Paver::with_pending(Fronts fronts) const {
+  for (const Fronts& region : pending_) fronts.insert(fronts.end(), region.begin(), region.end());
+  return fronts;
+}
+
+void Paver::pave_front(std::vector<Index> front, int& row) {
+  for (; front.size() > 2; ++row) {  // 2 or fewer: zipped shut
     if (row >= opt_.max_rows) throw ModelError("paving: no closure after " + std::to_string(row) + " rows");
     const std::size_t m = front.size();
     bool ok = false;
     if (m <= 8) ok = close(front, false) || close(front, true);
-    else ok = advance(front, row, 1.0) || advance(front, row, 0.6) || close(front, false) || close(front, true);
+    else
+      ok = advance(front, row, 1.0) || advance(front, row, 0.6) || close(front, false) || split(front) ||
+           close(front, true);
     if (!ok)
       throw ModelError("paving: the front of " + std::to_string(m) + " nodes after " + std::to_string(row) +
                        " rows could not advance without self-intersection (narrow or strongly concave "
                        "regions are not supported yet)");
     std::vector<bool> movable(pts_.size(), false);
     for (Index v = Index(n_); v < pts_.size(); ++v) movable[v] = parent_[v] == v;
-    smooth(movable, front, opt_.row_smoothing);
+    smooth(movable, with_pending({front}), opt_.row_smoothing);
   }
-  return finish();
 }
 
 Mesh2 Paver::finish() {
@@ -93,7 +117,63 @@ Mesh2 pave_2d(const std::vector<Vec2>& loop, const PavingOptions& options) {
     throw ModelError("paving: needs an even number (>= 4) of boundary points, got " + std::to_string(loop.size()));
   if (!simple_polygon(loop)) throw ModelError("paving: the boundary intersects itself");
   if (signed_area(loop) <= 0) throw ModelError("paving: the boundary must run counter-clockwise");
-  return Paver(loop, options).run();
+  std::vector<Index> front(loop.size());
+  for (Index i = 0; i < front.size(); ++i) front[i] = i;
+  return Paver(loop, {front}, options).run();
+}
+
+namespace {
+
+bool loops_touch(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j)
+      if (segments_meet(a[i], a[(i + 1) % a.size()], b[j], b[(j + 1) % b.size()])) return true;
+  return false;
+}
+
+// Loops that do not touch are nested or apart; one corner tells which.
+bool inside(const Vec2& p, const std::vector<Vec2>& loop) {
+  std::vector<K::Point_2> poly;
+  for (const Vec2& v : loop) poly.push_back(cg(v));
+  return CGAL::bounded_side_2(poly.begin(), poly.end(), cg(p), K()) == CGAL::ON_BOUNDED_SIDE;
+}
+
+}  // namespace
+
+Mesh2 pave_2d(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
+              const PavingOptions& options) {
+  if (holes.empty()) return pave_2d(outer, options);
+  std::size_t total = outer.size();
+  if (outer.size() < 4) throw ModelError("paving: the outer loop needs at least 4 points, got " + std::to_string(outer.size()));
+  if (!simple_polygon(outer)) throw ModelError("paving: the outer loop intersects itself");
+  if (signed_area(outer) <= 0) throw ModelError("paving: the outer loop must run counter-clockwise");
+  for (std::size_t h = 0; h < holes.size(); ++h) {
+    const std::string name = "hole " + std::to_string(h + 1);
+    if (holes[h].size() < 3) throw ModelError("paving: " + name + " needs at least 3 points, got " + std::to_string(holes[h].size()));
+    if (!simple_polygon(holes[h])) throw ModelError("paving: " + name + " intersects itself");
+    if (loops_touch(outer, holes[h])) throw ModelError("paving: " + name + " touches or crosses the outer loop");
+    if (!inside(holes[h][0], outer)) throw ModelError("paving: " + name + " is not inside the outer loop");
+    for (std::size_t g = 0; g < h; ++g) {
+      const std::string other = "hole " + std::to_string(g + 1);
+      if (loops_touch(holes[g], holes[h])) throw ModelError("paving: " + name + " touches or crosses " + other);
+      if (inside(holes[h][0], holes[g]) || inside(holes[g][0], holes[h]))
+        throw ModelError("paving: " + name + " and " + other + " are nested");
+    }
+    total += holes[h].size();
+  }
+  if (total % 2)
+    throw ModelError("paving: needs an even number of boundary points in all loops together (an all-quad patch has an even boundary), got " +
+                     std::to_string(total));
+  std::vector<Vec2> points = outer;
+  std::vector<std::vector<Index>> fronts(1);
+  for (Index i = 0; i < outer.size(); ++i) fronts[0].push_back(i);
+  for (const std::vector<Vec2>& hole : holes) {
+    std::vector<Index> front;
+    for (const Vec2& p : hole) front.push_back(Index(points.size())), points.push_back(p);
+    if (signed_area(hole) > 0) std::reverse(front.begin(), front.end());  // the region on its left
+    fronts.push_back(front);
+  }
+  return Paver(points, fronts, options).run();
 }
 
 }  // namespace tendril::meshing

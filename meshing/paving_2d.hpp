@@ -27,11 +27,18 @@
 //    nodes by Laplacian smoothing, then a local search that maximises the
 //    worst scaled Jacobian around nodes whose quads are below 0.7. No move
 //    may invert a quad.
-// Not done: wedges (node insertion on concave fronts), front splitting when
-// distant parts of a front meet other than by seams, clean-up by element
-// deletion, and size grading inside the domain. Strongly concave boundaries
-// (stars, T-junctions) still mesh but with a worst scaled Jacobian nearer
-// 0.2-0.5 than the 0.7 of convex or orthogonal ones.
+//  - holes: each hole is a front of its own, clockwise, growing with wedges
+//    (reflex side nodes made corners) while the outer one shrinks; two
+//    fronts within a row of each other are joined by one quad into a
+//    single front and the strip beside the bridge is zipped shut
+//    (paving_fronts.cpp);
+//  - splitting: a front that can neither advance nor close is cut in two
+//    by one quad across a neck narrower than a row (then zipped), and each
+//    piece is paved on its own.
+// Not done: wedges on concave outer fronts, clean-up by element deletion,
+// and size grading inside the domain. Strongly concave boundaries (stars,
+// T-junctions) and small holes near one side still mesh but with a worst
+// scaled Jacobian nearer 0.2-0.5 than the 0.7 of convex or orthogonal ones.
 #include <Eigen/Core>
 #include <vector>
 
@@ -59,5 +66,13 @@ bool simple_polygon(const std::vector<Vec2>& loop);
 // Paves the inside of a simple counter-clockwise polygon with an even number
 // (>= 4) of corners. Throws ModelError("paving: ...") when it cannot.
 Mesh2 pave_2d(const std::vector<Vec2>& loop, const PavingOptions& options = {});
+
+// A domain with holes: `outer` as above (any count >= 4), each hole a simple
+// polygon of >= 3 corners in either orientation, strictly inside `outer` and
+// outside the other holes, no two loops touching; the total number of
+// corners even. Mesh2::points are outer's, then each hole's, in the given
+// order. Every loop starts as a front of its own (paving_fronts.cpp).
+Mesh2 pave_2d(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
+              const PavingOptions& options = {});
 
 }  // namespace tendril::meshing

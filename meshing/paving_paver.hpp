@@ -57,13 +57,18 @@ enum class Kind { End, Side, Corner };
 // with and are read through find().
 class Paver {
  public:
-  Paver(const std::vector<Vec2>& loop, const PavingOptions& o);
+  // `points` are the given boundary nodes; each of `fronts` is a cycle of
+  // indices into them with the region on its left (the outer loop
+  // counter-clockwise, holes clockwise).
+  Paver(const std::vector<Vec2>& points, std::vector<std::vector<Index>> fronts, const PavingOptions& o);
   Mesh2 run();
 
  private:
   std::vector<Vec2> pts_;
   std::vector<Index> parent_;
   std::vector<QuadIndices> quads_;
+  std::vector<std::vector<Index>> fronts0_;
+  std::vector<std::vector<std::vector<Index>>> pending_;  // regions not yet paved
   std::size_t n_;
   double h_ = 0;
   PavingOptions opt_;
@@ -105,12 +110,29 @@ class Paver {
     quads_.resize(k.quads);
   }
 
+  using Fronts = std::vector<std::vector<Index>>;
+
   // paving_rows.cpp
-  bool advance(std::vector<Index>& front, int row, double scale);
+  bool advance(std::vector<Index>& front, int row, double scale, const Fronts& others = {});
   void add_row_ends(const std::vector<Index>& front, const std::vector<double>& theta, std::vector<Kind>& kind) const;
+  void add_wedges(const std::vector<Index>& front, const std::vector<double>& theta, std::vector<Kind>& kind,
+                  long count) const;
   void seam(std::vector<Index>& front);
   bool share_quad(Index a, Index b);
-  bool row_valid(const std::vector<Index>& old_front, const std::vector<Index>& next, const Mark& before);
+  bool row_valid(const std::vector<Index>& old_front, const std::vector<Index>& next, const Mark& before,
+                 const Fronts& others);
+
+  void pave_front(std::vector<Index> front, int& row);
+  Fronts with_pending(Fronts fronts) const;
+
+  // paving_fronts.cpp (domains with holes: several fronts until they join;
+  // narrow necks: a front split in two)
+  void pave_fronts(Fronts& fronts, int& row);
+  double gap(const Fronts& fronts, std::size_t k) const;
+  bool bridge_clear(const Fronts& fronts, const std::array<Index, 4>& q, bool both_rungs) const;
+  void join(Fronts& fronts);
+  bool split(std::vector<Index>& front);
+  void zip(Fronts& fronts, std::size_t which, Index u, Index v);
 
   // paving_closure.cpp
   struct Closure {
@@ -121,7 +143,7 @@ class Paver {
   bool close(std::vector<Index>& front, bool any_valid);
 
   // paving_smoothing.cpp
-  void smooth(const std::vector<bool>& movable, const std::vector<Index>& front, int iterations);
+  void smooth(const std::vector<bool>& movable, const Fronts& fronts, int iterations);
   void optimise(const std::vector<bool>& movable, int iterations);
 
   Mesh2 finish();

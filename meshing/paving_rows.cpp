@@ -5,7 +5,7 @@ namespace tendril::meshing::detail {
 
 // One row of quads along the whole front; false (and nothing changed) when
 // the row would overlap itself or the old front.
-bool Paver::advance(std::vector<Index>& front, int row, double scale) {
+bool Paver::advance(std::vector<Index>& front, int row, double scale, const Fronts& others) {
   const std::size_t m = front.size();
   const double pi = std::numbers::pi;
   std::vector<double> theta(m);
@@ -38,15 +38,18 @@ bool Paver::advance(std::vector<Index>& front, int row, double scale) {
     const double local = 0.5 * ((next - x).norm() + (prev - x).norm());
     const double base = scale * (row == 0 ? 0.5 * (local + h_) : h_);
     const Vec2 dn = (next - x).normalized();
+    auto ray = [&](double a) { return Vec2(dn.x() * std::cos(a) - dn.y() * std::sin(a), dn.x() * std::sin(a) + dn.y() * std::cos(a)); };
     const double half = theta[j] / 2;
-    const Vec2 bisector(dn.x() * std::cos(half) - dn.y() * std::sin(half), dn.x() * std::sin(half) + dn.y() * std::cos(half));
     if (kind[j] == Kind::Side) {
-      left[j] = right[j] = add(x + base / std::max(std::sin(half), 0.5) * bisector);
+      left[j] = right[j] = add(x + base / std::max(std::sin(half), 0.5) * ray(half));
     } else {
-      const Vec2 din = (x - prev).normalized();
-      left[j] = add(x + base * Vec2(-din.y(), din.x()));
-      middle[j] = add(x + base * std::sqrt(2.0) * bisector);
-      right[j] = add(x + base * Vec2(-dn.y(), dn.x()));
+      // Three quads share the angle at x: the two side quads get a right
+      // angle where there is room (theta >= 270 deg), a third of it on the
+      // flatter wedges of a growing front; the corner quad the rest.
+      const double side = std::min(pi / 2, theta[j] / 3);
+      left[j] = add(x + base * ray(theta[j] - side));
+      middle[j] = add(x + 2 * base * std::cos(half - side) * ray(half));
+      right[j] = add(x + base * ray(side));
     }
   }
   for (std::size_t j = 0; j < m; ++j)
@@ -70,7 +73,7 @@ bool Paver::advance(std::vector<Index>& front, int row, double scale) {
   while (next.size() > 1 && next.front() == next.back()) next.pop_back();
   seam(next);
 
-  if (!row_valid(front, next, before)) {
+  if (!row_valid(front, next, before, others)) {
     rollback(before);
     return false;
   }
@@ -90,8 +93,13 @@ void Paver::add_row_ends(const std::vector<Index>& front, const std::vector<doub
     natural += kind[j] == Kind::Side ? 1 : kind[j] == Kind::Corner ? 3 : -1;
     if (kind[j] == Kind::End) ends.push_back(j);
   }
-  const long target = std::max(4L, 2 * std::lround((perimeter - 2 * std::numbers::pi * h_) / (2 * h_)));
+  // The next front is shorter than this one by h times the turning of the
+  // front (2 pi for an outer loop) and longer by as much for a hole's.
+  double turning = 0;
+  for (double t : theta) turning += std::numbers::pi - t;
+  const long target = std::max(4L, 2 * std::lround((perimeter - turning * h_) / (2 * h_)));
   long extra = (natural - target) / 2;
+  if (extra < 0 && turning < 0) add_wedges(front, theta, kind, -extra);
   if (extra <= 0) return;
   const std::size_t spacing = std::max<std::size_t>(3, m / (ends.size() + std::size_t(extra)) - 1);
   std::vector<std::size_t> candidates;
@@ -109,6 +117,33 @@ void Paver::add_row_ends(const std::vector<Index>& front, const std::vector<doub
     kind[c] = Kind::End;
     ends.push_back(c);
     --extra;
+  }
+}
+
+// Row adjustment on a growing front (around a hole): its flattest reflex
+// side nodes become corners (wedges), each adding two nodes to the front,
+// spread along it.
+void Paver::add_wedges(const std::vector<Index>& front, const std::vector<double>& theta, std::vector<Kind>& kind,
+                       long count) const {
+  const std::size_t m = front.size();
+  std::vector<std::size_t> corners, candidates;
+  for (std::size_t j = 0; j < m; ++j) {
+    if (kind[j] == Kind::Corner) corners.push_back(j);
+    if (kind[j] == Kind::Side && theta[j] > 1.02 * std::numbers::pi) candidates.push_back(j);
+  }
+  const std::size_t spacing = std::max<std::size_t>(3, m / (corners.size() + std::size_t(count)) - 1);
+  std::stable_sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) { return theta[a] > theta[b]; });
+  for (std::size_t c : candidates) {
+    if (count == 0) break;
+    bool far = true;
+    for (std::size_t e : corners) {
+      const std::size_t d = c > e ? c - e : e - c;
+      far = far && std::min(d, m - d) >= spacing;
+    }
+    if (!far) continue;
+    kind[c] = Kind::Corner;
+    corners.push_back(c);
+    --count;
   }
 }
 
@@ -146,20 +181,37 @@ bool Paver::share_quad(Index a, Index b) {
   return false;
 }
 
-bool Paver::row_valid(const std::vector<Index>& old_front, const std::vector<Index>& next, const Mark& before) {
+bool Paver::row_valid(const std::vector<Index>& old_front, const std::vector<Index>& next, const Mark& before,
+                      const Fronts& others) {
   for (std::size_t q = before.quads; q < quads_.size(); ++q) {
     QuadIndices c = quads_[q];
     for (Index& v : c) v = find(v);
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b)
         if (c[a] == c[b]) return false;
-    if (!strictly_convex(corners(c))) return false;
+    const auto p = corners(c);
+    if (!strictly_convex(p)) return false;
+    // The other fronts (of a domain with holes) stay outside the new quads.
+    for (const std::vector<Index>& o : others)
+      for (std::size_t i = 0; i < o.size(); ++i) {
+        const Vec2 a = pts_[o[i]], b = pts_[o[(i + 1) % o.size()]];
+        bool inside = true;
+        for (int k = 0; k < 4; ++k) {
+          if (segments_meet(p[k], p[(k + 1) % 4], a, b)) return false;
+          inside = inside && CGAL::orientation(cg(p[k]), cg(p[(k + 1) % 4]), cg(a)) == CGAL::LEFT_TURN;
+        }
+        if (inside) return false;
+      }
   }
   if (next.size() <= 2) return true;  // zipped shut by seams
   if (next.size() % 2) return false;
   std::vector<Vec2> poly;
   for (Index v : next) poly.push_back(pts_[v]);
-  if (!simple_polygon(poly) || signed_area(poly) <= 0) return false;
+  std::vector<Vec2> old_poly;
+  for (Index v : old_front) old_poly.push_back(pts_[v]);
+  // Same orientation as the front it replaces: counter-clockwise for an
+  // outer front, clockwise around a hole.
+  if (!simple_polygon(poly) || signed_area(poly) * signed_area(old_poly) <= 0) return false;
   const std::size_t m = old_front.size();
   for (std::size_t i = 0; i < poly.size(); ++i)
     for (std::size_t j = 0; j < m; ++j)

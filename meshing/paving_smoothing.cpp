@@ -12,7 +12,7 @@ namespace tendril::meshing::detail {
 // makes each a parallelogram) and slides along the front towards the middle
 // of its two front neighbours. A move that would invert an incident quad
 // (or make an inverted one worse) is refused.
-void Paver::smooth(const std::vector<bool>& movable, const std::vector<Index>& front, int iterations) {
+void Paver::smooth(const std::vector<bool>& movable, const Fronts& fronts, int iterations) {
   if (iterations <= 0) return;
   const std::size_t np = pts_.size();
   std::vector<std::set<Index>> neighbours(np);
@@ -28,12 +28,13 @@ void Paver::smooth(const std::vector<bool>& movable, const std::vector<Index>& f
   }
   std::vector<bool> on_front(np, false);
   std::vector<Index> front_prev(np), front_next(np);
-  for (std::size_t k = 0; k < front.size(); ++k) {
-    const Index v = find(front[k]);
-    on_front[v] = true;
-    front_prev[v] = find(front[(k + front.size() - 1) % front.size()]);
-    front_next[v] = find(front[(k + 1) % front.size()]);
-  }
+  for (const std::vector<Index>& front : fronts)
+    for (std::size_t k = 0; k < front.size(); ++k) {
+      const Index v = find(front[k]);
+      on_front[v] = true;
+      front_prev[v] = find(front[(k + front.size() - 1) % front.size()]);
+      front_next[v] = find(front[(k + 1) % front.size()]);
+    }
   auto worst = [&](Index v) {
     double j = 1;
     for (std::size_t q : incident[v]) j = std::min(j, jacobian(corners(quads_[q])));

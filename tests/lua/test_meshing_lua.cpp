@@ -84,7 +84,13 @@ assert(ok and #m:particles(finer) == 81)
 local top = m:particles(ring(m, 24, 1.5, 0, 2))
 local tube = m:project{ from = ps, to = top, rows = 2, closed = true, EA = 500 }
 m:step(25)
-assert(m:count().patches == 3)   -- patch_refine deleted cc (rule 27)
+-- rule 20 with a hole: an annulus between two rings above the tube
+local outer = m:particles(ring(m, 24, 3, 0, 4))
+local inner = m:particles(ring(m, 12, 1.5, 0.2, 4))
+local annulus = m:pave{ particles = outer, holes = { inner }, EA = 500, prestress = 5 }
+assert(m:state(inner[1]) == "shared")
+m:step(25)
+assert(m:count().patches == 4)   -- patch_refine deleted cc (rule 27)
 m:check()
 m:save(tendril.out("paving_live.xml"))
 m:save_journal(tendril.out("paving_journal.txt"))
@@ -102,7 +108,7 @@ m:save_journal(tendril.out("paving_journal.txt"))
   CHECK(lines.find("\npatch ") != std::string::npos);
   CHECK(model_xml_string(model, solver.settings) == live);
   CHECK(lines.find("\ndelete ") != std::string::npos);  // patch_refine deleted the old patch
-  CHECK(model.block_count(BlockKind::Patch) == 3);
+  CHECK(model.block_count(BlockKind::Patch) == 4);
 
   // The model database holds any patch: load, save, same bytes.
   Model loaded;
@@ -118,6 +124,8 @@ local m = tendril.model()
 local rim = ring(m, 12, 2)
 local ps = m:particles(rim)
 local grid = m:project{ from = { ps[1], ps[2], ps[3] }, to = { ps[9], ps[8], ps[7] }, rows = 1, EA = 10 }
+local small = { m:particle{ 0.5, 0, 0 }, m:particle{ 0, 0.5, 0 }, m:particle{ -0.5, 0, 0 }, m:particle{ 0, -0.5, 0 } }
+local wide = { m:particle{ 1, 0, 0 }, m:particle{ 0, 1, 0 }, m:particle{ -1, 0, 0 }, m:particle{ 0, -1, 0 } }
 m:save(tendril.out("bad_before.xml"))
 local function fails(expect, f)
   local ok, err = pcall(f)
@@ -136,6 +144,12 @@ fails("pave: particle 0 appears twice in the loop", function()
 end)
 fails("pave: 'EA' is required", function() m:pave{ particles = ps } end)
 fails("pave: unknown key 'levels'", function() m:pave{ particles = ps, EA = 1, levels = 2 } end)
+fails("pave: 'holes' must be a list of particle lists", function() m:pave{ particles = ps, holes = 3, EA = 1 } end)
+fails("pave: 'holes' must be a list of particle lists (item 1 is not a list)", function()
+  m:pave{ particles = ps, holes = { ps[1] }, EA = 1 }
+end)
+fails("pave: hole 2 and hole 1 are nested", function() m:pave{ particles = ps, holes = { small, wide }, EA = 1 } end)
+fails("pave: particle 1 appears twice in the loops", function() m:pave{ particles = ps, holes = { { ps[2], small[1], small[2] } }, EA = 1 } end)
 fails("catmull_clark: needs at least 3 particles, got 2", function() m:catmull_clark{ particles = { ps[1], ps[2] }, EA = 1 } end)
 fails("catmull_clark: 'levels' must be an integer from 0 to 8", function()
   m:catmull_clark{ particles = ps, levels = 9, EA = 1 }
@@ -153,7 +167,7 @@ fails("subdivide_patch: argument 2: expected a patch, got a beam", function() m:
 fails("subdivide_patch: 'EA' must be > 0", function() m:subdivide_patch(grid, { EA = -1 }) end)
 fails("quality: block 0 is a beam, not a patch", function() m:quality(rim) end)
 fails("triangulation: block 0 is a beam, not a patch", function() m:triangulation(rim) end)
-assert(m:count().patches == 1 and m:count().particles == 15)
+assert(m:count().patches == 1 and m:count().particles == 23)
 m:check()
 m:save(tendril.out("bad_after.xml"))
 )lua");
