@@ -5,7 +5,9 @@
 //
 // Adding a case is adding one file, validate/cases/NAME.cpp (NAME a C++
 // identifier), that defines `Case NAME_case()` in this namespace; the build
-// finds it and registry.hpp lists it (file-name order). A sketch:
+// finds it and registry.hpp lists it (file-name order). A sketch (the real
+// one: cases/prestressed_ring.cpp; models shared with the tests go in
+// benchmark_models.hpp):
 //
 //   Case ring_case() {
 //     Case c;
