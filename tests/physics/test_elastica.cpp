@@ -7,8 +7,8 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <numbers>
 
+#include "benchmark_models.hpp"
 #include "model/model.hpp"
 #include "physics/solver.hpp"
 
@@ -20,32 +20,11 @@ struct ElasticaResult {
   double deflection, load, exact_deflection, exact_load;
 };
 
-// The strut, started from a half sine wave with the right chord and roughly
-// the right arc length; the rest lengths stay those of the straight strut.
-struct Strut {
-  Model m;
-  std::vector<ParticleId> ps;
-  double exact_deflection = 0, exact_load = 0;
-
-  explicit Strut(double theta0_deg) {
-    const double L = 10, EI = 1e5, EA = 1e8;
-    const int n = 64;
-    const double k = std::sin(theta0_deg * std::numbers::pi / 360);
-    const double K = std::comp_ellint_1(k), E = std::comp_ellint_2(k);
-    const double chord = L * (2 * E / K - 1);
-    for (int i = 0; i <= n; ++i) ps.push_back(m.add_particle(Vec3(L * i / n, 0, 0)));
-    m.add_beam(ps, Section{EA, EI, 0, 0});
-    const double amp = k * L / K;
-    for (int i = 0; i <= n; ++i) {
-      const double s = double(i) / n;
-      m.particles.position[ps[i]] = Vec3(chord * s, amp * std::sin(std::numbers::pi * s), 0);
-    }
-    for (ParticleId p : ps) m.set_lock(p, kLockZ);
-    m.set_lock(ps.front(), kLockX | kLockY | kLockZ);
-    m.set_lock(ps.back(), kLockX | kLockY | kLockZ);
-    exact_deflection = k * L / K;
-    exact_load = EI * std::pow(2 * K / L, 2);
-  }
+// The strut of validate/benchmark_models.hpp at 64 segments, started from a
+// half sine wave with the right chord and roughly the right arc length; the
+// rest lengths stay those of the straight strut.
+struct Strut : validate::Elastica {
+  explicit Strut(double theta0_deg) : Elastica(theta0_deg, 64) {}
 
   ElasticaResult measure(const Solver& solver) const {
     return {m.particles.position[ps[ps.size() / 2]].y(), -solver.reaction(ps.back()).x(), exact_deflection,
