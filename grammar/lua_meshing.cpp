@@ -17,6 +17,7 @@
 #include "paving.hpp"
 #include "projection.hpp"
 #include "quality.hpp"
+#include "tube.hpp"
 
 namespace tendril::lua {
 
@@ -174,6 +175,40 @@ int l_project(lua_State* L) {
   return 1;
 }
 
+void push_particle_list(lua_State* L, Scene& s, const std::vector<ParticleId>& ps) {
+  lua_createtable(L, int(ps.size()), 0);
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    push_particle(L, s, ps[i]);
+    lua_rawseti(L, -2, lua_Integer(i + 1));
+  }
+}
+
+// m:tube{between = {p1, p2}, rows = r, rings = k, EA =, prestress =, line_mass =}:
+// rule 22, the tube between two patches' interiors; returns the tube and
+// the two rims (rim_b[i] faces rim_a[i]).
+int l_tube(lua_State* L) {
+  const char* fn = "tube";
+  Scene& s = check_scene(L, fn);
+  JournalScope record(s, fn, describe_args(L, 2, lua_gettop(L)));
+  check_table(L, 2, fn);
+  check_keys(L, 2, fn, {"between", "rows", "rings", "EA", "E", "A", "prestress", "line_mass"});
+  const Section sec = read_patch_section(L, 2, fn, {}, true);
+  const int rows = field_count(L, 2, "rows", fn, 0, 0, meshing::kMaxProjectionRows);
+  const int rings = field_count(L, 2, "rings", fn, 1, 1, meshing::kMaxTubeRings);
+  const std::vector<ParticleId> ends = field_particles(L, 2, "between", s, fn);
+  if (ends.size() != 2) key_error(fn, "between", "must hold two particles, got " + std::to_string(ends.size()));
+  const auto t = as_method(fn, "tube", [&] {
+    return meshing::tube_between_patches(s.model, ends[0], ends[1], rows, sec, rings);
+  });
+  for (ParticleId q : t.removed) s.record("remove_from_patch " + std::to_string(q));
+  record_patch(s, t.tube, sec);
+  push_block(L, s, t.tube.patch);
+  push_particle_list(L, s, t.rim_a);
+  push_particle_list(L, s, t.rim_b);
+  record.done();
+  return 3;
+}
+
 // m:subdivide_patch(patch [, {EA =, prestress =, line_mass =}]): rule 25, a
 // new patch one Catmull-Clark step finer. The old patch stays alive until the
 // model can delete patches (see meshing/catmull_clark_rules.hpp).
@@ -279,6 +314,7 @@ void add_meshing_methods(lua_State* L) {
   set_fn<l_pave>(L, "pave");
   set_fn<l_catmull_clark>(L, "catmull_clark");
   set_fn<l_project>(L, "project");
+  set_fn<l_tube>(L, "tube");
   set_fn<l_subdivide_patch>(L, "subdivide_patch");
   set_fn<l_quality>(L, "quality");
   set_fn<l_triangulation>(L, "triangulation");

@@ -20,6 +20,12 @@ local function kind_is(m, b, wanted)
   return k == wanted, string.format("block %d is a %s, not a %s", b.id, k, wanted)
 end
 
+local function on_patch(m, p)
+  for _, b in ipairs(m:blocks(p)) do
+    if m:kind(b) == "patch" then return b end
+  end
+end
+
 local function on_beam(m, p)
   for _, b in ipairs(m:blocks(p)) do
     if m:kind(b) == "beam" then return b end
@@ -253,11 +259,28 @@ define("patch_projection", "rule 21: a tensile patch between two particle sequen
   function(m, options) return two_sequences(options, 2) end,
   function(m, options) return m:project(options) end)
 
--- Rule 22 builds the tube between two rings; cutting the rings out of two
--- patches' interiors first is patch_remove_simple / patch_remove_shared.
-define("patch_tube", "rule 22: a tube of quads between two rings of particles",
-  function(m, options) return two_sequences(options, 3) end,
+-- Rule 22 (thesis fig. 4.39): { between = { p1, p2 }, rows =, rings =, EA = ... }
+-- cuts the neighbourhoods of two simple particles out of their patches and
+-- joins the two rims with a tube (m:tube); the production checks that the
+-- neighbourhoods are equivalent (rims of equal length) and disjoint. The
+-- older form { from = ring1, to = ring2, ... } joins two given rings.
+define("patch_tube", "rule 22: a tube between two patches' interiors",
   function(m, options)
+    if type(options) == "table" and options.between ~= nil then
+      local ps, why = particle_list(options, "between")
+      if not ps then return false, why end
+      if #ps ~= 2 then return false, string.format("'between' has %d particles, needs 2", #ps) end
+      for _, p in ipairs(ps) do
+        local ok, why_state = state_is(m, p, "simple")
+        if not ok then return false, why_state end
+        if on_patch(m, p) == nil then return false, string.format("particle %d is not on a patch", p.id) end
+      end
+      return true
+    end
+    return two_sequences(options, 3)
+  end,
+  function(m, options)
+    if options.between ~= nil then return m:tube(options) end
     local tube = {}
     for k, v in pairs(options) do tube[k] = v end
     tube.closed = true
@@ -272,12 +295,6 @@ define("patch_refine", "rule 25: subdivide a tensile patch by Catmull-Clark",
     m:delete(patch)
     return finer
   end)
-
-local function on_patch(m, p)
-  for _, b in ipairs(m:blocks(p)) do
-    if m:kind(b) == "patch" then return b end
-  end
-end
 
 define("patch_remove_simple", "rule 23: delete a simple particle of a tensile patch and its quads",
   function(m, p)

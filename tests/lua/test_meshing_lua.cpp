@@ -90,7 +90,19 @@ local inner = m:particles(ring(m, 12, 1.5, 0.2, 4))
 local annulus = m:pave{ particles = outer, holes = { inner }, EA = 500, prestress = 5 }
 assert(m:state(inner[1]) == "shared")
 m:step(25)
-assert(m:count().patches == 4)   -- patch_refine deleted cc (rule 27)
+-- rule 22 between two patches' interiors: cuts both, then the tube
+local function grid(z)
+  local ps = {}
+  for r = 0, 4 do for c = 0, 4 do ps[#ps + 1] = m:particle{ 20 + c, r, z } end end
+  m:quad_grid{ particles = ps, rows = 5, cols = 5, EA = 1e3, prestress = 5 }
+  for i = 1, 5 do m:lock(ps[i], "xyz") end
+  return ps
+end
+local low, high = grid(0), grid(2)
+local ok, between = m:apply(tendril.rules.patch_tube, { between = { low[13], high[13] }, rows = 2, EA = 50, prestress = 5 })
+assert(ok and m:kind(between) == "patch")
+m:step(25)
+assert(m:count().patches == 7)   -- patch_refine deleted cc (rule 27)
 m:check()
 m:save(tendril.out("paving_live.xml"))
 m:save_journal(tendril.out("paving_journal.txt"))
@@ -108,7 +120,8 @@ m:save_journal(tendril.out("paving_journal.txt"))
   CHECK(lines.find("\npatch ") != std::string::npos);
   CHECK(model_xml_string(model, solver.settings) == live);
   CHECK(lines.find("\ndelete ") != std::string::npos);  // patch_refine deleted the old patch
-  CHECK(model.block_count(BlockKind::Patch) == 4);
+  CHECK(lines.find("\nremove_from_patch ") != std::string::npos);  // rule 22 cut both grids
+  CHECK(model.block_count(BlockKind::Patch) == 7);
 
   // The model database holds any patch: load, save, same bytes.
   Model loaded;
