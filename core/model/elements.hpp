@@ -1,6 +1,8 @@
 #pragma once
 // Element buffers derived from the map. Each element remembers one dart of the
 // cell it belongs to, so a swap-remove can re-point that cell in O(1).
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "model/membrane.hpp"
@@ -67,12 +69,65 @@ struct Cst {
   std::uint32_t dart;
 };
 
+// A flat element buffer, partitioned for multi-resolution (thesis 5.5.2.3):
+// items[0, awake) touch no passive particle and are all the solver
+// evaluates; items[awake, size) are dormant and cost nothing in a step. An
+// element changes side by one swap with the border, so the partition is
+// kept by O(1) work per element a change touches, and every swap goes
+// through the undo log. `repoint(k)` (given by the model) re-points the cell
+// of the element that now sits at index k (its dart column).
+// A new element type joins the partition by calling place() whenever its
+// particles change (and erase() to remove it), and the solver loops over
+// awake_end() only; Model::set_passive then has to re-place it too.
 template <class E>
 struct ElementBuffer {
   LoggedVector<E> items;
+  std::size_t awake = 0;
+  UndoLog* log = nullptr;
+
+  void attach(UndoLog* undo) {
+    log = undo;
+    items.attach(undo);
+  }
   std::size_t size() const { return items.size(); }
   E& operator[](std::size_t n) { return items[n]; }
   const E& operator[](std::size_t n) const { return items[n]; }
+  const E* awake_begin() const { return items.data(); }
+  const E* awake_end() const { return items.data() + awake; }
+  void clear() {
+    items.clear();
+    if (log) log->scalar(awake);
+    awake = 0;
+  }
+  // Moves element n to the awake side (wake) or the dormant side; returns
+  // its new index.
+  template <class Repoint>
+  std::uint32_t place(std::uint32_t n, bool wake, Repoint&& repoint) {
+    if (wake == (n < awake)) return n;
+    if (log) log->scalar(awake);
+    std::uint32_t border;
+    if (wake) border = static_cast<std::uint32_t>(awake++);
+    else border = static_cast<std::uint32_t>(--awake);
+    if (border != n) {
+      const E moved = std::as_const(items)[border];
+      items[border] = std::as_const(items)[n];
+      items[n] = moved;
+      repoint(n);
+      repoint(border);
+    }
+    return border;
+  }
+  // Removes element n; the last element takes its place.
+  template <class Repoint>
+  void erase(std::uint32_t n, Repoint&& repoint) {
+    n = place(n, false, repoint);
+    const std::uint32_t last = static_cast<std::uint32_t>(items.size() - 1);
+    if (n != last) {
+      items[n] = items.back();
+      repoint(n);
+    }
+    items.pop_back();
+  }
 };
 
 }  // namespace tendril

@@ -26,11 +26,11 @@ Model::Model()
   particles.attach(log);
   blocks.attach(log);
   free_blocks_.attach(log);
-  bars.items.attach(log);
-  hinges.items.attach(log);
-  beam6s.items.attach(log);
+  bars.attach(log);
+  hinges.attach(log);
+  beam6s.attach(log);
   joints.items.attach(log);
-  csts.items.attach(log);
+  csts.attach(log);
 }
 
 void Model::require_particle(ParticleId p, const char* what) const {
@@ -186,17 +186,37 @@ void Model::add_bar(Dart d) {
   bind_bar(e);
 }
 
+// An element is awake when none of its particles is passive (thesis
+// 5.5.2.3: the elements of passive particles leave the computation); only
+// awake elements lump their mass.
 void Model::bind_bar(ElementIndex e) {
   Bar& bar = bars[e];
   bar.i = dart_particle[bar.dart];
   bar.j = dart_particle[map.alpha(0, bar.dart)];
-  double half = 0.5 * bar.line_mass * bar.rest_length;
-  particles.lumped_mass[bar.i] += half;
-  particles.lumped_mass[bar.j] += half;
+  place_bar(e);
+}
+
+void Model::place_bar(ElementIndex e) {
+  const Bar& bar = std::as_const(bars)[e];
+  const bool wake = !particles.passive[bar.i] && !particles.passive[bar.j];
+  e = bars.place(e, wake, [this](ElementIndex k) { repoint_bar(k); });
+  if (e >= bars.awake) return;
+  const Bar& b = std::as_const(bars)[e];
+  double half = 0.5 * b.line_mass * b.rest_length;
+  particles.lumped_mass[b.i] += half;
+  particles.lumped_mass[b.j] += half;
+}
+
+void Model::repoint_bar(ElementIndex e) {
+  map.for_orbit(kEdgeOrbit, std::as_const(bars)[e].dart, [&](Dart x) {
+    dart_bar[x] = e;
+    return true;
+  });
 }
 
 void Model::unbind_bar(ElementIndex e) {
-  const Bar& bar = bars[e];
+  if (e >= bars.awake) return;
+  const Bar& bar = std::as_const(bars)[e];
   double half = 0.5 * bar.line_mass * bar.rest_length;
   particles.lumped_mass[bar.i] -= half;
   particles.lumped_mass[bar.j] -= half;
@@ -206,19 +226,12 @@ void Model::remove_bar(Dart d) {
   ElementIndex e = dart_bar[d];
   if (e == kNone) return;
   unbind_bar(e);
-  map.for_orbit(kEdgeOrbit, bars[e].dart, [&](Dart x) {
+  const Dart gone = std::as_const(bars)[e].dart;
+  bars.erase(e, [this](ElementIndex k) { repoint_bar(k); });  // re-points gone's edge on the way
+  map.for_orbit(kEdgeOrbit, gone, [&](Dart x) {
     dart_bar[x] = kNone;
     return true;
   });
-  ElementIndex last = static_cast<ElementIndex>(bars.size() - 1);
-  if (e != last) {
-    bars[e] = bars[last];
-    map.for_orbit(kEdgeOrbit, bars[e].dart, [&](Dart x) {
-      dart_bar[x] = e;
-      return true;
-    });
-  }
-  bars.items.pop_back();
 }
 
 // --- hinges ------------------------------------------------------------------
@@ -238,15 +251,14 @@ void Model::add_hinge(Dart d) {
 void Model::remove_hinge(Dart d) {
   ElementIndex h = dart_hinge[d];
   if (h == kNone) return;
-  Dart hd = hinges[h].dart;
+  const Dart hd = std::as_const(hinges)[h].dart;
+  hinges.erase(h, [this](ElementIndex k) { repoint_hinge(k); });
   dart_hinge[hd] = dart_hinge[map.alpha(1, hd)] = kNone;
-  ElementIndex last = static_cast<ElementIndex>(hinges.size() - 1);
-  if (h != last) {
-    hinges[h] = hinges[last];
-    Dart md = hinges[h].dart;
-    dart_hinge[md] = dart_hinge[map.alpha(1, md)] = h;
-  }
-  hinges.items.pop_back();
+}
+
+void Model::repoint_hinge(ElementIndex h) {
+  const Dart hd = std::as_const(hinges)[h].dart;
+  dart_hinge[hd] = dart_hinge[map.alpha(1, hd)] = h;
 }
 
 void Model::refresh_hinge(Dart d) {
@@ -257,6 +269,13 @@ void Model::refresh_hinge(Dart d) {
   hinge.i = dart_particle[map.alpha(0, hd)];
   hinge.j = dart_particle[hd];
   hinge.k = dart_particle[map.alpha(0, map.alpha(1, hd))];
+  place_hinge(h);
+}
+
+void Model::place_hinge(ElementIndex h) {
+  const Hinge& hg = std::as_const(hinges)[h];
+  const bool wake = !particles.passive[hg.i] && !particles.passive[hg.j] && !particles.passive[hg.k];
+  hinges.place(h, wake, [this](ElementIndex k) { repoint_hinge(k); });
 }
 
 void Model::refresh_vertex(Dart d) {
@@ -304,18 +323,40 @@ void Model::bind_beam6(ElementIndex e) {
   b.j = dart_particle[other];
   b.end_i = beam_end[b.dart];
   b.end_j = Quat(beam_end[other] * end_flip());  // turned to look from i to j
+  particles.add_rotational_end(b.i);
+  particles.add_rotational_end(b.j);
+  place_beam6(e);
+}
+
+void Model::place_beam6(ElementIndex e) {
+  const Beam6& el = std::as_const(beam6s)[e];
+  const bool wake = !particles.passive[el.i] && !particles.passive[el.j];
+  e = beam6s.place(e, wake, [this](ElementIndex k) { repoint_beam6(k); });
+  if (e >= beam6s.awake) return;
+  const Beam6& b = std::as_const(beam6s)[e];
   const double half = 0.5 * b.line_mass * b.rest_length;
   particles.lumped_mass[b.i] += half;
   particles.lumped_mass[b.j] += half;
-  particles.add_rotational_end(b.i);
-  particles.add_rotational_end(b.j);
 }
 
-void Model::unbind_beam6(ElementIndex e) {
-  const Beam6& b = beam6s[e];
+void Model::repoint_beam6(ElementIndex e) {
+  map.for_orbit(kEdgeOrbit, std::as_const(beam6s)[e].dart, [&](Dart x) {
+    dart_beam6[x] = e;
+    return true;
+  });
+}
+
+void Model::unlump_beam6(ElementIndex e) {
+  if (e >= beam6s.awake) return;
+  const Beam6& b = std::as_const(beam6s)[e];
   const double half = 0.5 * b.line_mass * b.rest_length;
   particles.lumped_mass[b.i] -= half;
   particles.lumped_mass[b.j] -= half;
+}
+
+void Model::unbind_beam6(ElementIndex e) {
+  unlump_beam6(e);
+  const Beam6& b = std::as_const(beam6s)[e];
   particles.remove_rotational_end(b.i);
   particles.remove_rotational_end(b.j);
 }
@@ -324,19 +365,12 @@ void Model::remove_beam6(Dart d) {
   ElementIndex e = dart_beam6[d];
   if (e == kNone) return;
   unbind_beam6(e);
-  map.for_orbit(kEdgeOrbit, beam6s[e].dart, [&](Dart x) {
+  const Dart gone = std::as_const(beam6s)[e].dart;
+  beam6s.erase(e, [this](ElementIndex k) { repoint_beam6(k); });
+  map.for_orbit(kEdgeOrbit, gone, [&](Dart x) {
     dart_beam6[x] = kNone;
     return true;
   });
-  ElementIndex last = static_cast<ElementIndex>(beam6s.size() - 1);
-  if (e != last) {
-    beam6s[e] = beam6s[last];
-    map.for_orbit(kEdgeOrbit, beam6s[e].dart, [&](Dart x) {
-      dart_beam6[x] = e;
-      return true;
-    });
-  }
-  beam6s.items.pop_back();
 }
 
 void Model::refresh_beam6(Dart d) {
@@ -378,10 +412,10 @@ void Model::rehome_dart(Dart d, ParticleId q) {
 // --- full rebuild ------------------------------------------------------------
 
 void Model::rebuild_elements() {
-  bars.items.clear();
-  hinges.items.clear();
-  beam6s.items.clear();
-  csts.items.clear();
+  bars.clear();
+  hinges.clear();
+  beam6s.clear();
+  csts.clear();
   for (ParticleId p = 0; p < particles.capacity(); ++p) particles.lumped_mass[p] = 0.0;
   particles.clear_rotational();
   const std::size_t n = map.capacity();
@@ -422,8 +456,36 @@ void Model::set_moment(ParticleId p, const Vec3& m) {
 
 void Model::set_passive(ParticleId p, bool passive) {
   require_particle(p, "set_passive");
+  if (bool(particles.passive[p]) == passive) return;
   particles.passive[p] = passive;
   particles.refresh_active(p);
+  if (passive) {  // frozen where it is: nothing left to integrate or report
+    particles.velocity[p].setZero();
+    particles.angular_velocity[p].setZero();
+    particles.force[p].setZero();
+    particles.torque[p].setZero();
+  }
+  // Its elements (bars and 6-DOF beams on its edges, hinges at it and at its
+  // neighbours) change sides: O(degree).
+  for (Dart head = particles.first_dart[p], d = head; d != kNone;) {
+    if (ElementIndex e = dart_bar[d]; e != kNone) {
+      unbind_bar(e);
+      place_bar(e);
+    }
+    if (ElementIndex e = dart_beam6[d]; e != kNone) {
+      unlump_beam6(e);
+      place_beam6(e);
+    }
+    if (ElementIndex h = dart_hinge[d]; h != kNone) place_hinge(h);
+    if (ElementIndex h = dart_hinge[map.alpha(0, d)]; h != kNone) place_hinge(h);
+    if (is_cst_patch(dart_block[d]))  // the triangles of its quads
+      map.for_orbit(kFaceOrbit, d, [&](Dart x) {
+        if (dart_cst[x] != kNone) place_cst(dart_cst[x]);
+        return true;
+      });
+    d = ring_next[d];
+    if (d == head) break;
+  }
 }
 
 void Model::set_load(ParticleId p, const Vec3& f) {

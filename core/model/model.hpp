@@ -138,6 +138,9 @@ class Model {
 
   // --- constraints and loads --------------------------------------------
   void set_lock(ParticleId p, std::uint8_t bits);
+  // Multi-resolution (thesis 5.5.2.3): a passive particle is frozen (its
+  // velocity, force and torque zeroed) and every element touching it goes
+  // dormant: neither is visited by a solver step. O(degree).
   void set_passive(ParticleId p, bool passive);
   void set_load(ParticleId p, const Vec3& f);
   void set_point_mass(ParticleId p, double kg);
@@ -236,8 +239,18 @@ class Model {
   void set_edge_rest_length(Dart d, double length);
   void add_bar(Dart d);  // parameters from the block's section and the edge
   void remove_bar(Dart d);
-  void bind_bar(ElementIndex e);
-  void unbind_bar(ElementIndex e);
+  void bind_bar(ElementIndex e);    // reads i, j from the map, then place_bar
+  void unbind_bar(ElementIndex e);  // unlumps its mass if awake
+  // Element partition (ElementBuffer): moves the element to the awake or
+  // dormant side as its particles' passive flags ask, lumping its mass when
+  // awake; repoint_* re-point the dart column of the element at an index.
+  void place_bar(ElementIndex e);
+  void repoint_bar(ElementIndex e);
+  void place_hinge(ElementIndex h);
+  void repoint_hinge(ElementIndex h);
+  void place_beam6(ElementIndex e);
+  void repoint_beam6(ElementIndex e);
+  void unlump_beam6(ElementIndex e);
   void add_hinge(Dart d);
   void remove_hinge(Dart d);
   void refresh_hinge(Dart d);  // re-reads i, j, k of the hinge at vertex d, if any
@@ -258,7 +271,8 @@ class Model {
   // CST elements (patch_formulations.cpp): one per dart marked cst_first.
   void add_cst(Dart d);
   void remove_cst(Dart d);
-  void bind_cst(ElementIndex e);     // particles from the dart's face
+  void bind_cst(ElementIndex e);     // particles from the dart's face, then place_cst
+  void place_cst(ElementIndex e);    // awake or dormant side (ElementBuffer)
   void refresh_csts(Dart d);         // after re-embedding d: the triangles of its face
   bool edge_has_bar(Dart d) const;   // not an interior edge of a CST patch
   std::string check_cst_face(Dart d) const;
@@ -267,6 +281,7 @@ class Model {
   std::string check_dart(Dart d) const;
   std::string check_beam6(Dart d) const;
   std::string check_rotation(ParticleId p) const;
+  std::string check_integrated(ParticleId p) const;
   Dart find_edge(ParticleId a, ParticleId b, BlockKind k) const;
   std::vector<Dart> darts_of(ParticleId p) const;
   void delete_component(BlockId b);

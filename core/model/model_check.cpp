@@ -43,6 +43,8 @@ std::string Model::check_dart(Dart d) const {
       return "bar " + std::to_string(e) + " does not point back to its edge";
     ParticleId bi = dart_particle[bar.dart], bj = dart_particle[map.alpha(0, bar.dart)];
     if (bar.i != bi || bar.j != bj) return "bar " + std::to_string(e) + " has stale particles";
+    if ((e < bars.awake) != (!particles.passive[bi] && !particles.passive[bj]))
+      return "bar " + std::to_string(e) + " is on the wrong side of the awake/dormant partition";
     if (!near(bar.rest_length, rest_length[d]) || bar.EA != blk.section.EA || bar.prestress != blk.section.prestress ||
         bar.line_mass != blk.section.line_mass || bar.tension_only != (blk.kind == BlockKind::Cable))
       return "bar " + std::to_string(e) + " parameters differ from its block and edge";
@@ -63,6 +65,8 @@ std::string Model::check_dart(Dart d) const {
     if (hg.i != dart_particle[map.alpha(0, hd)] || hg.j != dart_particle[hd] ||
         hg.k != dart_particle[map.alpha(0, map.alpha(1, hd))] || hg.EI != blk.section.EI)
       return "hinge " + std::to_string(h) + " is stale";
+    if ((h < hinges.awake) != (!particles.passive[hg.i] && !particles.passive[hg.j] && !particles.passive[hg.k]))
+      return "hinge " + std::to_string(h) + " is on the wrong side of the awake/dormant partition";
   }
   return {};
 }
@@ -76,6 +80,8 @@ std::string Model::check_beam6(Dart d) const {
   if (dart_beam6[el.dart] != e || (el.dart != d && el.dart != other)) return name + " does not point back to its edge";
   const Dart far = map.alpha(0, el.dart);
   if (el.i != dart_particle[el.dart] || el.j != dart_particle[far]) return name + " has stale particles";
+  if ((e < beam6s.awake) != (!particles.passive[el.i] && !particles.passive[el.j]))
+    return name + " is on the wrong side of the awake/dormant partition";
   if (!(el.end_i.coeffs() == beam_end[el.dart].coeffs()) ||
       !(el.end_j.coeffs() == Quat(beam_end[far] * end_flip()).coeffs()))
     return name + " has stale beam ends";
@@ -101,6 +107,16 @@ std::string Model::check_rotation(ParticleId p) const {
   return {};
 }
 
+// Multi-resolution bookkeeping: p is in Particles::integrated exactly when
+// it is active, at the slot it remembers.
+std::string Model::check_integrated(ParticleId p) const {
+  const std::uint32_t slot = particles.integrated_slot[p];
+  if ((particles.active[p] != 0) != (slot != kNone) ||
+      (slot != kNone && (slot >= particles.integrated.size() || particles.integrated[slot] != p)))
+    return "particle " + std::to_string(p) + " is misfiled in the list of integrated particles";
+  return {};
+}
+
 std::string Model::check_near(const std::vector<ParticleId>& ps) const {
   for (ParticleId p : ps) {
     if (!particles.valid(p)) continue;
@@ -108,6 +124,7 @@ std::string Model::check_near(const std::vector<ParticleId>& ps) const {
       return "particle " + std::to_string(p) + " is not finite";
     if (particles.active[p] != (particles.degree[p] > 0 && !particles.passive[p]))
       return "particle " + std::to_string(p) + " has a stale active flag";
+    if (std::string m = check_integrated(p); !m.empty()) return m;
     if (std::string m = check_rotation(p); !m.empty()) return m;
     std::uint32_t degree = 0, rot_degree = 0;
     for (Dart d : darts_of(p)) {
@@ -146,9 +163,13 @@ std::string Model::check() const {
       if (dart_block[map.alpha(i, d)] != b) return "dart " + std::to_string(d) + ": alpha" + std::to_string(i) + " leaves its block";
     if (std::string m = check_dart(d); !m.empty()) return m;
   }
+  if (bars.awake > bars.size() || hinges.awake > hinges.size() || beam6s.awake > beam6s.size() ||
+      csts.awake > csts.size())
+    return "an element buffer counts more awake elements than it holds";
   for (std::size_t e = 0; e < bars.size(); ++e) {
     const Bar& bar = bars[e];
     if (!map.alive(bar.dart) || dart_bar[bar.dart] != e) return "bar " + std::to_string(e) + " is orphaned";
+    if (e >= bars.awake) continue;  // dormant: lumps no mass
     double half = 0.5 * bar.line_mass * bar.rest_length;
     lumped[bar.i] += half;
     lumped[bar.j] += half;
@@ -157,9 +178,11 @@ std::string Model::check() const {
   for (std::size_t e = 0; e < beam6s.size(); ++e) {
     const Beam6& el = beam6s[e];
     if (!map.alive(el.dart) || dart_beam6[el.dart] != e) return "6-DOF beam element " + std::to_string(e) + " is orphaned";
-    double half = 0.5 * el.line_mass * el.rest_length;
-    lumped[el.i] += half;
-    lumped[el.j] += half;
+    if (e < beam6s.awake) {
+      double half = 0.5 * el.line_mass * el.rest_length;
+      lumped[el.i] += half;
+      lumped[el.j] += half;
+    }
     ++rot_degree[el.i];
     ++rot_degree[el.j];
   }
@@ -181,7 +204,7 @@ std::string Model::check() const {
     if (blk.dofs != 3 && !(blk.dofs == 6 && blk.kind == BlockKind::Beam))
       return "block " + std::to_string(b) + " has " + std::to_string(int(blk.dofs)) + " DOF per particle";
   }
-  std::size_t rotating = 0;
+  std::size_t rotating = 0, integrated = 0;
   for (ParticleId p = 0; p < particles.capacity(); ++p) {
     if (!particles.alive[p]) continue;
     if (degree[p] != particles.degree[p]) return "particle " + std::to_string(p) + " miscounts its darts";
@@ -192,9 +215,12 @@ std::string Model::check() const {
       return "particle " + std::to_string(p) + " is not finite";
     if (rot_degree[p] != particles.rot_degree[p]) return "particle " + std::to_string(p) + " miscounts its 6-DOF beam ends";
     if (std::string m = check_rotation(p); !m.empty()) return m;
+    if (std::string m = check_integrated(p); !m.empty()) return m;
     rotating += rot_degree[p] > 0;
+    integrated += particles.active[p];
   }
   if (rotating != particles.rotational.size()) return "the list of rotating particles holds a dead or stray particle";
+  if (integrated != particles.integrated.size()) return "the list of integrated particles holds a dead or stray particle";
   return {};
 }
 

@@ -1,5 +1,7 @@
 #include "model/particles.hpp"
 
+#include <utility>
+
 namespace tendril {
 
 void Particles::attach(UndoLog* undo) {
@@ -11,7 +13,7 @@ void Particles::attach(UndoLog* undo) {
   orientation.attach(undo);
   for (auto* v : {&angular_velocity, &torque, &moment}) v->attach(undo);
   rot_stiffness.attach(undo);
-  for (auto* v : {&rot_degree, &rotational_slot, &rotational}) v->attach(undo);
+  for (auto* v : {&rot_degree, &rotational_slot, &rotational, &integrated, &integrated_slot}) v->attach(undo);
 }
 
 ParticleId Particles::allocate(Vec3 x) {
@@ -38,6 +40,7 @@ ParticleId Particles::allocate(Vec3 x) {
     rot_stiffness.push_back(0);
     rot_degree.push_back(0);
     rotational_slot.push_back(kNone);
+    integrated_slot.push_back(kNone);
   }
   position[p] = x;
   velocity[p].setZero();
@@ -91,9 +94,28 @@ void Particles::clear_rotational() {
   rotational.clear();
 }
 
+void Particles::refresh_active(ParticleId p) {
+  const std::uint8_t now = alive[p] && degree[p] > 0 && !passive[p];
+  if (now == std::as_const(active)[p]) return;
+  active[p] = now;
+  if (now) {
+    integrated_slot[p] = static_cast<std::uint32_t>(integrated.size());
+    integrated.push_back(p);
+    return;
+  }
+  const std::uint32_t slot = integrated_slot[p];
+  const ParticleId last = integrated.back();
+  if (last != p) {
+    integrated[slot] = last;
+    integrated_slot[last] = slot;
+  }
+  integrated.pop_back();
+  integrated_slot[p] = kNone;
+}
+
 void Particles::release(ParticleId p) {
   alive[p] = 0;
-  active[p] = 0;
+  refresh_active(p);
   ++generation[p];
   free_slots.push_back(p);
   if (log) log->scalar(live);

@@ -16,6 +16,14 @@ namespace tendril {
 // the 6-DOF beam ends on a particle, and `rotational` lists the particles
 // whose count is > 0 (`rotational_slot` is the place in that list), so the
 // solver's rotational work touches those only.
+//
+// Multi-resolution (thesis 5.5.2.3): `integrated` lists the active particles
+// (alive, on a block, not passive) and `integrated_slot` is each one's place
+// in it (kNone when not active). refresh_active keeps both in step by one
+// push or one swap-remove, logged like every write, so a rollback restores
+// the list exactly. The solver and every integrator loop over `integrated`
+// only, so a passive particle costs nothing in a step; its order is the
+// order of activation (deterministic for a given history).
 struct Particles {
   LoggedVector<Vec3> position, velocity, force, load;
   LoggedVector<double> stiffness;   // greatest direct stiffness S (eq. 3.4)
@@ -38,6 +46,8 @@ struct Particles {
   LoggedVector<std::uint32_t> rot_degree;       // 6-DOF beam ends on the particle
   LoggedVector<std::uint32_t> rotational_slot;  // index in `rotational`, or kNone
   LoggedVector<ParticleId> rotational;          // particles with rot_degree > 0
+  LoggedVector<ParticleId> integrated;          // the particles with active == 1
+  LoggedVector<std::uint32_t> integrated_slot;  // index in `integrated`, or kNone
   std::size_t live = 0;
   UndoLog* log = nullptr;
 
@@ -47,7 +57,7 @@ struct Particles {
   double mass(ParticleId p) const { return point_mass[p] + lumped_mass[p]; }
   ParticleId allocate(Vec3 x);  // by value: x may live in `position`
   void release(ParticleId p);
-  void refresh_active(ParticleId p) { active[p] = alive[p] && degree[p] > 0 && !passive[p]; }
+  void refresh_active(ParticleId p);  // active and `integrated` from alive, degree and passive
   // One more / one fewer 6-DOF beam end on p; keeps `rotational` in step.
   void add_rotational_end(ParticleId p);
   void remove_rotational_end(ParticleId p);

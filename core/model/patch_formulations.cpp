@@ -192,18 +192,21 @@ void Model::bind_cst(ElementIndex e) {
   c.i = dart_particle[c.dart];
   c.j = dart_particle[x];
   c.k = dart_particle[map.alpha(0, map.alpha(1, x))];
+  place_cst(e);
+}
+
+// Awake when none of its corners is passive (ElementBuffer, thesis 5.5.2.3).
+void Model::place_cst(ElementIndex e) {
+  const Cst& c = std::as_const(csts)[e];
+  const bool wake = !particles.passive[c.i] && !particles.passive[c.j] && !particles.passive[c.k];
+  csts.place(e, wake, [this](ElementIndex k) { dart_cst[std::as_const(csts)[k].dart] = k; });
 }
 
 void Model::remove_cst(Dart d) {
   const ElementIndex e = dart_cst[d];
   if (e == kNone) return;
+  csts.erase(e, [this](ElementIndex k) { dart_cst[std::as_const(csts)[k].dart] = k; });
   dart_cst[d] = kNone;
-  const ElementIndex last = static_cast<ElementIndex>(csts.size() - 1);
-  if (e != last) {
-    csts[e] = csts[last];
-    dart_cst[csts[e].dart] = e;
-  }
-  csts.items.pop_back();
 }
 
 void Model::refresh_csts(Dart d) {
@@ -239,6 +242,8 @@ std::string Model::check_cst_face(Dart d) const {
   const Dart x = map.alpha(0, d);
   if (c.i != dart_particle[d] || c.j != dart_particle[x] || c.k != dart_particle[map.alpha(0, map.alpha(1, x))])
     return name + " has stale particles";
+  if ((e < csts.awake) != (!particles.passive[c.i] && !particles.passive[c.j] && !particles.passive[c.k]))
+    return name + " is on the wrong side of the awake/dormant partition";
   if (!(c.membrane == blocks[dart_block[d]].membrane) || !(c.ref == cst_reference[d]))
     return name + " parameters differ from its patch and dart";
   return {};

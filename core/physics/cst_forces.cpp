@@ -31,10 +31,9 @@ constexpr double kDegenerate = 1e-10;
 }
 
 void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
-  const std::uint8_t* active = model_.particles.active.data();
   const double gf = settings.geometric_factor;
-  for (const Cst& t : model_.csts.items) {
-    if (!(active[t.i] | active[t.j] | active[t.k])) continue;
+  for (const Cst* tp = model_.csts.awake_begin(); tp != model_.csts.awake_end(); ++tp) {  // awake only
+    const Cst& t = *tp;
     const Membrane& m = t.membrane;
     const bool analysis = m.mode == Membrane::Analysis;
     // Elastic stiffness (analysis): the diagonal of A B^T D B bounded over

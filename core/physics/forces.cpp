@@ -13,10 +13,11 @@ namespace tendril {
 
 void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S, Vec3* T, double* K) const {
   const Particles& P = model_.particles;
-  const std::size_t n = P.capacity();
   const Vec3 g = model_.gravity;
-  for (std::size_t p = 0; p < n; ++p) {
-    F[p] = P.load[p] + (P.point_mass[p] + P.lumped_mass[p]) * g;
+  const Vec3* load = P.load.data();
+  const double *point_mass = P.point_mass.data(), *lumped_mass = P.lumped_mass.data();
+  for (ParticleId p : P.integrated.raw()) {
+    F[p] = load[p] + (point_mass[p] + lumped_mass[p]) * g;
     S[p] = 0;
   }
   for (ParticleId p : P.rotational.raw()) {
@@ -24,11 +25,10 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
     K[p] = 0;
   }
   const double gf = settings.geometric_factor;
-  // Elements whose particles are all passive (multi-resolution, thesis
-  // 5.5.2.3) are skipped: they move nothing that is integrated.
-  const std::uint8_t* active = P.active.data();
-  for (const Bar& b : model_.bars.items) {
-    if (!(active[b.i] | active[b.j])) continue;
+  // Only awake elements: those touching a passive particle (multi-
+  // resolution, thesis 5.5.2.3) sit behind ElementBuffer::awake, unvisited.
+  for (const Bar* bp = model_.bars.awake_begin(); bp != model_.bars.awake_end(); ++bp) {
+    const Bar& b = *bp;
     const Vec3 d = x[b.j] - x[b.i];
     const double L = d.norm();
     const double k = b.EA / b.rest_length;
@@ -43,8 +43,8 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
     S[b.i] += s;
     S[b.j] += s;
   }
-  for (const Hinge& h : model_.hinges.items) {
-    if (!(active[h.i] | active[h.j] | active[h.k])) continue;
+  for (const Hinge* hp = model_.hinges.awake_begin(); hp != model_.hinges.awake_end(); ++hp) {
+    const Hinge& h = *hp;
     const HingeForces f = hinge_forces(h, x);
     if (!std::isfinite(f.ka + f.kb)) [[unlikely]]
       throw_degenerate_hinge(model_, h, x);  // a zero-length link (coincident particles): stop, naming them
@@ -53,8 +53,8 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
     F[h.k] += f.fk;
     F[h.j] -= f.fi + f.fk;
   }
-  for (const Beam6& b : model_.beam6s.items) {
-    if (!(active[b.i] | active[b.j])) continue;
+  for (const Beam6* bp = model_.beam6s.awake_begin(); bp != model_.beam6s.awake_end(); ++bp) {
+    const Beam6& b = *bp;
     const Beam6Ends e = beam6_ends(b, x, q, gf);
     S[b.i] += e.k;
     S[b.j] += e.k;

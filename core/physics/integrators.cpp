@@ -10,6 +10,9 @@
 // positions and frames stay as they were.
 // Rotation mirrors translation with x -> R, v -> w, F/M -> T/I and the drift
 // x + h v -> R_T(h w) R (eq. 3.16-3.17); it runs over the rotating particles.
+// Translation runs over Particles::integrated (the active particles) only:
+// a passive particle is never read or written, and no awake element reads
+// one (ElementBuffer), so stage buffers need no values for it.
 #include <algorithm>
 #include <cmath>
 
@@ -38,7 +41,7 @@ void Solver::kick_drift(bool whole_kick) {
   Particles& P = model_.particles;
   const std::uint8_t* active = P.active.data();
   const std::uint8_t* lock = P.lock.data();
-  const std::size_t n = P.capacity();
+  const std::vector<ParticleId>& integrated = P.integrated.raw();
   const double dt = settings.dt;
   double A = 1, B = 1;
   if (settings.damping == Damping::Viscous) {  // eq. 3.26
@@ -50,8 +53,7 @@ void Solver::kick_drift(bool whole_kick) {
   Vec3* v = P.velocity.data();
   const Vec3* F = P.force.data();
   const double* mass = mass_.data();
-  for (std::size_t p = 0; p < n; ++p) {
-    if (!active[p]) continue;
+  for (ParticleId p : integrated) {
     const double M = mass[p];
     v[p] = (keep * v[p] + (first * B * dt / M) * F[p]).cwiseProduct(free_axes(lock[p]));  // eq. 3.11 / 3.26
     ke += M * v[p].squaredNorm();                                                        // eq. 3.28
@@ -84,8 +86,7 @@ void Solver::kick_drift(bool whole_kick) {
       const double G = ke_prev2_ - ke_prev_, H = ke_prev_ - ke;
       if (H - G != 0) q = H / (H - G);
     }
-    for (std::size_t p = 0; p < n; ++p) {
-      if (!active[p]) continue;
+    for (ParticleId p : integrated) {
       const Vec3 Ff = F[p].cwiseProduct(free_axes(lock[p]));
       x[p] += dt * v[p] - dt * (1 + q) * v[p] + 0.5 * dt * dt * q * Ff / mass[p];
       v[p].setZero();
@@ -99,8 +100,7 @@ void Solver::kick_drift(bool whole_kick) {
     record_reset();
     return;
   }
-  for (std::size_t p = 0; p < n; ++p)
-    if (active[p]) x[p] += dt * v[p];  // eq. 3.12
+  for (ParticleId p : integrated) x[p] += dt * v[p];  // eq. 3.12
   for (ParticleId p : rotating)
     if (active[p]) R[p] = turned(dt * w[p], R[p]);  // eq. 3.19
   record_energy(ke, momentum2);
@@ -116,8 +116,8 @@ void Solver::synchronize_velocities() {
   Vec3* vel = P.velocity.data();
   const Vec3* force = P.force.data();
   const double h = 0.5 * settings.dt;
-  for (std::size_t p = 0; p < P.capacity(); ++p)
-    if (active[p]) vel[p] = (vel[p] + (h / mass_[p]) * force[p]).cwiseProduct(free_axes(lock[p]));
+  for (ParticleId p : P.integrated.raw())
+    vel[p] = (vel[p] + (h / mass_[p]) * force[p]).cwiseProduct(free_axes(lock[p]));
   Vec3* w = P.angular_velocity.data();
   const Vec3* T = P.torque.data();
   for (ParticleId p : P.rotational.raw())
@@ -134,15 +134,11 @@ void Solver::integrate_velocity_verlet() {
   Particles& P = model_.particles;
   const std::uint8_t* active = P.active.data();
   const std::uint8_t* lock = P.lock.data();
-  const std::size_t n = P.capacity();
+  const std::vector<ParticleId>& integrated = P.integrated.raw();
   const double dt = settings.dt, h = 0.5 * dt, C = viscous_rate();
   const Vec3 *x = P.position.data(), *v = P.velocity.data(), *F = P.force.data();
   const double* mass = mass_.data();
-  for (std::size_t p = 0; p < n; ++p) {
-    if (!active[p]) {
-      xs_[p] = x[p];
-      continue;
-    }
+  for (ParticleId p : integrated) {
     const Vec3 free = free_axes(lock[p]);
     vs_[p] = ((1 - C / 2) * v[p] + (h / mass[p]) * F[p]).cwiseProduct(free);
     xs_[p] = x[p] + dt * vs_[p];
@@ -161,8 +157,7 @@ void Solver::integrate_velocity_verlet() {
   }
   stage_forces();
   double ke = 0, momentum2 = 0;
-  for (std::size_t p = 0; p < n; ++p) {
-    if (!active[p]) continue;
+  for (ParticleId p : integrated) {
     const double M = mass[p];
     vs_[p] = (vs_[p] + (h / M) * Fs_[p].cwiseProduct(free_axes(lock[p]))) / (1 + C / 2);
     ke += M * vs_[p].squaredNorm();
@@ -185,15 +180,11 @@ void Solver::integrate_midpoint() {
   Particles& P = model_.particles;
   const std::uint8_t* active = P.active.data();
   const std::uint8_t* lock = P.lock.data();
-  const std::size_t n = P.capacity();
+  const std::vector<ParticleId>& integrated = P.integrated.raw();
   const double dt = settings.dt, h = 0.5 * dt, c = viscous_rate() / dt;
   const Vec3 *x = P.position.data(), *v = P.velocity.data(), *F = P.force.data();
   const double* mass = mass_.data();
-  for (std::size_t p = 0; p < n; ++p) {
-    if (!active[p]) {
-      xs_[p] = x[p];
-      continue;
-    }
+  for (ParticleId p : integrated) {
     const Vec3 free = free_axes(lock[p]);
     const Vec3 v0 = v[p].cwiseProduct(free);
     const Vec3 a0 = F[p].cwiseProduct(free) / mass[p] - c * v0;
@@ -217,8 +208,7 @@ void Solver::integrate_midpoint() {
   }
   stage_forces();
   double ke = 0, momentum2 = 0;
-  for (std::size_t p = 0; p < n; ++p) {
-    if (!active[p]) continue;
+  for (ParticleId p : integrated) {
     const Vec3 free = free_axes(lock[p]);
     const double M = mass[p];
     const Vec3 am = Fs_[p].cwiseProduct(free) / M - c * vs_[p];
@@ -248,15 +238,11 @@ void Solver::integrate_rk4() {
   Particles& P = model_.particles;
   const std::uint8_t* active = P.active.data();
   const std::uint8_t* lock = P.lock.data();
-  const std::size_t n = P.capacity();
+  const std::vector<ParticleId>& integrated = P.integrated.raw();
   const double dt = settings.dt, c = viscous_rate() / dt;
   const Vec3 *x = P.position.data(), *v = P.velocity.data(), *F = P.force.data();
   const double* mass = mass_.data();
-  for (std::size_t p = 0; p < n; ++p) {  // j = 1
-    if (!active[p]) {
-      xs_[p] = x[p];
-      continue;
-    }
+  for (ParticleId p : integrated) {  // j = 1
     const Vec3 free = free_axes(lock[p]);
     const Vec3 L1 = v[p].cwiseProduct(free);
     const Vec3 K1 = F[p].cwiseProduct(free) / mass[p] - c * L1;
@@ -287,8 +273,7 @@ void Solver::integrate_rk4() {
   // j = 2, 3: weight 2; the next stage sits at h = dt/2, then dt.
   for (double h : {0.5 * dt, dt}) {
     stage_forces();
-    for (std::size_t p = 0; p < n; ++p) {
-      if (!active[p]) continue;
+    for (ParticleId p : integrated) {
       const Vec3 free = free_axes(lock[p]);
       const Vec3 L = vs_[p];
       const Vec3 K = Fs_[p].cwiseProduct(free) / mass[p] - c * L;
@@ -310,8 +295,7 @@ void Solver::integrate_rk4() {
   }
   stage_forces();  // j = 4
   double ke = 0, momentum2 = 0;
-  for (std::size_t p = 0; p < n; ++p) {
-    if (!active[p]) continue;
+  for (ParticleId p : integrated) {
     const Vec3 free = free_axes(lock[p]);
     const double M = mass[p];
     const Vec3 L = vs_[p];
@@ -338,28 +322,26 @@ void Solver::integrate_rk4() {
 void Solver::commit(const Vec3* xn, const Vec3* vn, const Quat* qn, const Vec3* wn, double ke, double momentum2) {
   Particles& P = model_.particles;
   const std::uint8_t* active = P.active.data();
-  const std::size_t n = P.capacity();
+  const std::vector<ParticleId>& integrated = P.integrated.raw();
   Vec3 *pos = P.position.data(), *vel = P.velocity.data(), *w = P.angular_velocity.data();
   Quat* R = P.orientation.data();
   const std::vector<ParticleId>& rotating = P.rotational.raw();
   bool finite = std::isfinite(ke);
-  for (std::size_t p = 0; p < n && finite; ++p)
-    if (active[p]) finite = xn[p].allFinite() && vn[p].allFinite();
+  for (std::size_t k = 0; k < integrated.size() && finite; ++k)
+    finite = xn[integrated[k]].allFinite() && vn[integrated[k]].allFinite();
   for (ParticleId p : rotating)
     if (active[p]) finite = finite && qn[p].coeffs().allFinite() && wn[p].allFinite();
   if (!finite) [[unlikely]]  // checked before anything is written: the model stays as it was
     throw non_finite_motion(model_, xn, vn, rotating.empty() ? nullptr : wn, settings, steps_,
                             "no particle was moved");
   if (kinetic_peak_passed(ke)) {  // stay at the step's start: the discrete peak
-    for (std::size_t p = 0; p < n; ++p)
-      if (active[p]) vel[p].setZero();
+    for (ParticleId p : integrated) vel[p].setZero();
     for (ParticleId p : rotating)
       if (active[p]) w[p].setZero();
     record_reset();
     return;
   }
-  for (std::size_t p = 0; p < n; ++p) {
-    if (!active[p]) continue;
+  for (ParticleId p : integrated) {
     pos[p] = xn[p];
     vel[p] = vn[p];
   }

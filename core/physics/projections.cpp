@@ -30,8 +30,7 @@ void project_bar(const Bar& b, const Vec3* x, double gf, const ProjectionSums& s
 
 void accumulate_projections(const Model& m, const Vec3* x, const Quat* q, double gf, const ProjectionSums& s) {
   const Particles& P = m.particles;
-  const std::size_t n = P.capacity();
-  for (std::size_t p = 0; p < n; ++p) {
+  for (ParticleId p : P.integrated.raw()) {  // passive particles: never read (ElementBuffer)
     s.pull[p].setZero();
     s.weight[p] = 0;
   }
@@ -40,17 +39,16 @@ void accumulate_projections(const Model& m, const Vec3* x, const Quat* q, double
     s.rot_weight[p] = 0;
   }
   const std::uint8_t* active = P.active.data();
-  for (const Bar& b : m.bars.items)
-    if (active[b.i] | active[b.j]) project_bar(b, x, gf, s);
-  for (const Hinge& h : m.hinges.items) {
-    if (!(active[h.i] | active[h.j] | active[h.k])) continue;
+  for (const Bar* b = m.bars.awake_begin(); b != m.bars.awake_end(); ++b) project_bar(*b, x, gf, s);
+  for (const Hinge* hp = m.hinges.awake_begin(); hp != m.hinges.awake_end(); ++hp) {
+    const Hinge& h = *hp;
     const HingeForces f = hinge_forces(h, x);
     add(s, h.i, f.ka, f.fi);
     add(s, h.k, f.kb, f.fk);
     add(s, h.j, f.ka + f.kb, -(f.fi + f.fk));
   }
-  for (const Beam6& b : m.beam6s.items) {
-    if (!(active[b.i] | active[b.j])) continue;
+  for (const Beam6* bp = m.beam6s.awake_begin(); bp != m.beam6s.awake_end(); ++bp) {
+    const Beam6& b = *bp;
     const Beam6Ends e = beam6_ends(b, x, q, gf);
     add(s, b.i, 2 * e.k, -e.fj);
     add(s, b.j, 2 * e.k, e.fj);
@@ -62,7 +60,10 @@ void accumulate_projections(const Model& m, const Vec3* x, const Quat* q, double
   for (const RotationalJoint& jt : m.joints.items) {
     ParticleId nb[4];
     Vec3 target[4];
-    if (!m.joint_neighbours(jt.particle, nb) || !joint_targets(jt, nb, x, target)) continue;
+    if (!m.joint_neighbours(jt.particle, nb)) continue;
+    // A joint touching a passive particle is dormant, like an element.
+    if (!(active[jt.particle] & active[nb[0]] & active[nb[1]] & active[nb[2]] & active[nb[3]])) continue;
+    if (!joint_targets(jt, nb, x, target)) continue;
     Vec3 sum = Vec3::Zero();
     for (int k = 0; k < 4; ++k) {
       const Vec3 f = jt.stiffness * (target[k] - x[nb[k]]);

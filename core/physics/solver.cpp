@@ -156,13 +156,11 @@ void Solver::size_scratch() {
 
 void Solver::prepare_masses() {
   const Particles& P = model_.particles;
-  const std::size_t n = P.capacity();
   const bool physical = settings.mass_mode == MassMode::Physical;
   const double mass_scale =
       settings.mass_factor * fictitious_mass_scale(settings.integrator) * 0.5 * settings.dt * settings.dt;  // eq. 3.4
   double residual2 = 0;
-  for (std::size_t p = 0; p < n; ++p) {
-    if (!P.active[p]) continue;
+  for (ParticleId p : P.integrated.raw()) {
     if (!P.force[p].allFinite() || !std::isfinite(P.stiffness[p]))
       throw NumericalError("solver: the force or stiffness on " + describe_particle(model_, ParticleId(p)) +
                            " is not finite at step " + std::to_string(steps_) + "; no particle was moved");
@@ -182,7 +180,7 @@ void Solver::prepare_masses() {
       M = mass_scale * P.stiffness[p];
       if (!(M > 0))
         throw NumericalError("solver: particle " + std::to_string(p) +
-                             " has no stiffness (an element with zero EA?) at step " + std::to_string(steps_));
+                             " has no stiffness (an element with zero EA, or every neighbour passive?) at step " + std::to_string(steps_));
     }
     mass_[p] = M;
     residual2 = std::max(residual2, P.force[p].cwiseProduct(free).squaredNorm());
@@ -193,10 +191,10 @@ void Solver::prepare_masses() {
       // A half element of line mass mu and length L turning about its node:
       // mu L^3 / 24, the same about every axis (isotropic, thesis 3.2.4.2).
       for (ParticleId p : P.rotational.raw()) inertia_[p] = 0;
-      for (const Beam6& b : model_.beam6s.items) {
-        const double I = b.line_mass * b.rest_length * b.rest_length * b.rest_length / 24;
-        inertia_[b.i] += I;
-        inertia_[b.j] += I;
+      for (const Beam6* b = model_.beam6s.awake_begin(); b != model_.beam6s.awake_end(); ++b) {
+        const double I = b->line_mass * b->rest_length * b->rest_length * b->rest_length / 24;
+        inertia_[b->i] += I;
+        inertia_[b->j] += I;
       }
     }
     for (ParticleId p : P.rotational.raw()) {
@@ -230,8 +228,7 @@ void Solver::stage_forces() {
   accumulate_forces(xs_.data(), qs_.data(), Fs_.data(), Ss_.data(), Ts_.data(), Ks_.data());
   ++evaluations_;
   const Particles& P = model_.particles;
-  for (std::size_t p = 0; p < P.capacity(); ++p) {
-    if (!P.active[p]) continue;
+  for (ParticleId p : P.integrated.raw()) {
     if (!Fs_[p].allFinite() || !xs_[p].allFinite())
       throw NumericalError("solver: the force on " + describe_particle(model_, ParticleId(p)) + " is not finite at a " +
                            integrator_name(settings.integrator) + " stage of step " + std::to_string(steps_) +

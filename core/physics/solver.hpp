@@ -7,6 +7,10 @@
 // inertias (eq. 3.49-3.50 with eq. 3.4), angular velocities in global
 // coordinates and frames updated by the rotation of eq. 3.16-3.17, in every
 // integrator. That work runs over Particles::rotational only.
+// Multi-resolution (thesis 5.5.2.3): a step visits Particles::integrated and
+// the awake part of each ElementBuffer (awake_begin() to awake_end()) only,
+// so passive particles and their elements cost nothing. A new integrator
+// loops the same way: `for (ParticleId p : model.particles.integrated.raw())`.
 // The step allocates nothing once the scratch buffers match the particle
 // capacity, and reads the topology only through the buffers.
 #include <array>

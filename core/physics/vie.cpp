@@ -48,13 +48,10 @@ void Solver::start_implicit_step(double dt) {
   const Particles& P = model_.particles;
   const std::uint8_t* active = P.active.data();
   const std::uint8_t* lock = P.lock.data();
-  const std::size_t n = P.capacity();
   double A = 1;
   if (settings.damping == Damping::Viscous) A = (1 - settings.viscous / 2) / (1 + settings.viscous / 2);
   const Vec3 g = model_.gravity;
-  for (std::size_t p = 0; p < n; ++p) {
-    xs_[p] = P.position[p];
-    if (!active[p]) continue;
+  for (ParticleId p : P.integrated.raw()) {  // no awake element reads a passive particle
     const Vec3 external = P.load[p] + (P.point_mass[p] + P.lumped_mass[p]) * g;
     const Vec3 free = free_axes(lock[p]);
     const Vec3 inertial = (dt * A * P.velocity[p]).cwiseProduct(free);
@@ -74,10 +71,8 @@ void Solver::start_implicit_step(double dt) {
 void Solver::finish_implicit_step(double dt) {
   const Particles& P = model_.particles;
   const std::uint8_t* active = P.active.data();
-  const std::size_t n = P.capacity();
   double ke = 0, momentum2 = 0;
-  for (std::size_t p = 0; p < n; ++p) {
-    if (!active[p]) continue;
+  for (ParticleId p : P.integrated.raw()) {
     if (!xs_[p].allFinite())
       throw NumericalError("solver: the position of particle " + std::to_string(p) + " is not finite after a " +
                            integrator_name(settings.integrator) + " step " + std::to_string(steps_) +
@@ -121,12 +116,10 @@ void Solver::integrate_vie() {
   const Particles& P = model_.particles;
   const std::uint8_t* active = P.active.data();
   const std::uint8_t* lock = P.lock.data();
-  const std::size_t n = P.capacity();
   const double inv_dt2 = 1 / (dt * dt);
   for (int it = 0; it < settings.vie_iterations; ++it) {
     local_step(xs_.data(), qs_.data());
-    for (std::size_t p = 0; p < n; ++p) {  // global step, eq. 3.63 with the momentum term
-      if (!active[p]) continue;
+    for (ParticleId p : P.integrated.raw()) {  // global step, eq. 3.63 with the momentum term
       const double m = mass_[p] * inv_dt2;
       xs_[p] += ((m * (x0_[p] - xs_[p]) + Fs_[p]) / (m + Ss_[p])).cwiseProduct(free_axes(lock[p]));
     }

@@ -46,6 +46,9 @@ std::string dump(Model& m) {
   o << "rotating";
   for (ParticleId p : P.rotational) o << ' ' << p;
   o << '\n';
+  o << "integrated";
+  for (ParticleId p : P.integrated) o << ' ' << p << '@' << P.integrated_slot[p];
+  o << "\nawake " << m.bars.awake << ' ' << m.hinges.awake << ' ' << m.beam6s.awake << '\n';
   o << "free";
   for (ParticleId p : P.free_slots) o << ' ' << p;
   o << "\nblocks " << m.blocks.size() << ' ' << m.block_count() << '\n';
@@ -86,7 +89,7 @@ struct Scene {
       return live[rng() % live.size()];
     };
     try {
-      switch (rng() % 11) {
+      switch (rng() % 12) {
         case 0: m.insert_particle(any(), any()); break;
         case 1: m.remove_from_beam(any()); break;
         case 2: m.merge({any(), any()}); break;
@@ -108,6 +111,7 @@ struct Scene {
           break;
         }
         case 10: m.set_orientation(any(), Quat(0.5, 0.5, 0.5, 0.5)); break;
+        case 11: m.set_passive(any(), rng() % 2); break;  // elements change sides
       }
     } catch (const ModelError&) {
     }
