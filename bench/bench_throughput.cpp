@@ -20,6 +20,7 @@
 
 #include "bench_util.hpp"
 #include "model/model.hpp"
+#include "multires.hpp"
 #include "physics/solver.hpp"
 
 using namespace tendril;
@@ -76,6 +77,17 @@ void build_passive_net(Model& m, int s) {
     for (int c = 0; c < s; ++c) m.set_passive(grid[r * s + c], true);
 }
 
+// Multi-resolution patch (thesis 5.5.2.3) in coarse mode: a coarse net of
+// (s - 1) / 4 quads a side with its factor-4 fine patch, whose ~94 % fine-only
+// particles are passive; and the coarse net alone, the active-only cost.
+int coarse_side(int s) { return std::max(2, (s - 1) / 4); }
+BlockId build_coarse_only_net(Model& m, int s) {
+  const int n = coarse_side(s) + 1;
+  return m.add_quad_grid(supported_grid(m, n), n, n, kNetSection);
+}
+void build_coarse_net(Model& m, int s) { build_coarse_only_net(m, s); }
+void build_multires_net(Model& m, int s) { meshing::multires_patch(m, build_coarse_only_net(m, s), 4); }
+
 // A woven grid: one beam along every row and one along every column, every
 // particle a crossing shared by two beams (a flat gridshell).
 void build_beam_grid(Model& m, int s) {
@@ -116,7 +128,7 @@ struct Case {
 };
 
 struct Measurement {
-  std::size_t particles = 0, bars = 0, hinges = 0, awake_bars = 0;
+  std::size_t particles = 0, bars = 0, hinges = 0, awake_bars = 0, capacity = 0;
   double build_s = 0;
   long rss_growth = 0;
   std::uint64_t steps = 0;
@@ -136,6 +148,7 @@ Measurement measure(const Case& c, std::size_t requested, double target_seconds)
   r.particles = model->particles.integrated.size();  // passive particles are not integrated
   r.bars = model->bars.size();
   r.awake_bars = model->bars.awake;
+  r.capacity = model->particle_count();
   r.hinges = model->hinges.size();
 
   Solver solver(*model);
@@ -250,6 +263,21 @@ int main(int argc, char** argv) {
     }
   }
   passive.print();
+
+  std::puts("\nmulti-resolution patch in coarse mode (factor 4): the coarse net with its passive fine patch");
+  std::puts("against the coarse net alone; ratio = ns per step with the fine patch / without (1.0 = free)");
+  Table multires({"fine particles", "passive", "active", "awake bars", "dormant bars", "us/step alone",
+                  "us/step multires", "ratio"});
+  for (std::size_t n : sizes) {
+    Measurement alone = measure(Case{"coarse net", build_coarse_net}, n, target_seconds);
+    Measurement coarse = measure(Case{"multires", build_multires_net}, n, target_seconds);
+    const double t_alone = 1e6 * alone.seconds / double(alone.steps), t_multi = 1e6 * coarse.seconds / double(coarse.steps);
+    multires.add({fmt("%zu", coarse.capacity), fmt("%zu", coarse.capacity - coarse.particles), fmt("%zu", coarse.particles),
+                  fmt("%zu", coarse.awake_bars), fmt("%zu", coarse.bars - coarse.awake_bars), fmt("%.1f", t_alone),
+                  fmt("%.1f", t_multi), fmt("%.2f", t_multi / t_alone)});
+    if (!coarse.check.empty() && failure.empty()) failure = "multires " + coarse.check;
+  }
+  multires.print();
   std::printf("\nDESIGN target >= 30 M p-it/s (bar net, one core): %.1f M p-it/s at %zu particles -> %s\n",
               bar_net_largest / 1e6, bar_net_largest_n, bar_net_largest >= 30e6 ? "met" : "NOT met");
   if (!failure.empty()) {

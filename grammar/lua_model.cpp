@@ -14,6 +14,7 @@
 #include "io/obj.hpp"
 #include "lua_args.hpp"
 #include "lua_meshing.hpp"
+#include "lua_multires.hpp"
 #include "lua_patch_formulation.hpp"
 #include "lua_query.hpp"
 #include "lua_rules.hpp"
@@ -981,6 +982,7 @@ void register_model_meta(lua_State* L) {
   add_rule_methods(L);
   add_query_methods(L);
   add_meshing_methods(L);
+  add_multires_methods(L);
   lua_setfield(L, -2, "__index");
   lua_pop(L, 1);
   for (const char* meta : {kParticleMeta, kBlockMeta}) {

@@ -339,6 +339,26 @@ define("patch_delete", "rule 27: delete a tensile patch",
   function(m, patch) return kind_is(m, patch, "patch") end,
   function(m, patch) m:delete(patch) end)
 
+-- Multi-resolution tensile patches (thesis 5.5.2.3; docs/meshing.md) ---------
+
+define("multires", "multi-resolution: a coarse patch with its fine patch, fine particles passive",
+  function(m, patch, options) return kind_is(m, patch, "patch") end,
+  function(m, patch, options) return m:multires(patch, options) end)
+
+local function multires_in(mr, coarse)
+  if type(mr) ~= "table" or mr.core == nil then return false, "needs a patch from tendril.rules.multires" end
+  if mr.is_coarse ~= coarse then return false, coarse and "the patch is fine" or "the patch is coarse" end
+  return true
+end
+
+define("refine", "multi-resolution: activate the fine particles, drop the coarse links",
+  function(m, mr) return multires_in(mr, true) end,
+  function(m, mr) m:refine(mr) end)
+
+define("coarsen", "multi-resolution: fine particles passive again, coarse links back",
+  function(m, mr) return multires_in(mr, false) end,
+  function(m, mr) m:coarsen(mr) end)
+
 tendril.rules = rules
 
 -- tendril.report(m, extra): m:summary() and the extra fields as one CSV row
