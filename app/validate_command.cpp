@@ -19,7 +19,7 @@ const char* const kValidateUsage =
     "usage: tendril validate [--csv FILE] [--plots DIR] [--quick] [--case NAME]...\n"
     "  --csv    writes the table's rows to FILE\n"
     "  --plots  writes DIR/CASE.png (error against wall time, log-log; needs gnuplot)\n"
-    "  --quick  fewer resolutions, some cases fewer integrators (for CI)\n"
+    "  --quick  every integrator at the coarsest resolution, the defaults at theirs (for CI)\n"
     "  --case   runs only this case (repeatable)\n";
 
 }  // namespace

@@ -68,10 +68,9 @@ struct Case {
   // Every explicit and constraint-based integrator unless a case says otherwise.
   std::vector<Integrator> integrators = all_integrators();
   std::vector<int> segments;        // the full run
-  std::vector<int> quick_segments;  // --quick (CI); must hold the default's
-  // --quick runs these integrators only (empty: all of `integrators`); for
-  // cases too slow to run every integrator in CI. Must hold the default's.
-  std::vector<Integrator> quick_integrators;
+  // --quick (CI): every formulation and integrator at the coarsest, the
+  // defaults at all (runner.hpp's matrix). Must hold the default's.
+  std::vector<int> quick_segments;
   Setting defaults;        // Leapfrog, kinetic damping, the published resolution
   double tolerance = 0;    // relative error allowed under `defaults`
   // Builds the model for the setting, relaxes it and measures the error.

@@ -25,10 +25,6 @@ void check(const Case& c, const std::vector<Case>& before) {
     fail("needs formulations, integrators, segments and quick_segments");
   if (!contains(c.formulations, c.defaults.formulation)) fail("default formulation is not in its formulations");
   if (!contains(c.integrators, c.defaults.solver.integrator)) fail("default integrator is not in its integrators");
-  if (!c.quick_integrators.empty() && !contains(c.quick_integrators, c.defaults.solver.integrator))
-    fail("default integrator is not in its quick_integrators");
-  for (Integrator i : c.quick_integrators)
-    if (!contains(c.integrators, i)) fail("a quick integrator is not in its integrators");
   if (!contains(c.segments, c.defaults.segments) || !contains(c.quick_segments, c.defaults.segments))
     fail("default segments missing from segments or quick_segments");
   if (!(c.tolerance > 0)) fail("tolerance must be positive");

@@ -23,9 +23,12 @@ std::string default_failure(const Row& r) {
 
 std::vector<Setting> matrix(const Case& c, bool quick) {
   std::vector<Setting> out;
+  const int coarsest = *std::min_element(c.quick_segments.begin(), c.quick_segments.end());
   for (const std::string& formulation : c.formulations)
-    for (Integrator integrator : quick && !c.quick_integrators.empty() ? c.quick_integrators : c.integrators)
+    for (Integrator integrator : c.integrators)
       for (int segments : quick ? c.quick_segments : c.segments) {
+        const bool default_column = formulation == c.defaults.formulation && integrator == c.defaults.solver.integrator;
+        if (quick && segments != coarsest && !default_column) continue;
         Setting s = c.defaults;
         s.formulation = formulation;
         s.segments = segments;

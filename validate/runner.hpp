@@ -22,7 +22,7 @@ struct Row {
 };
 
 struct RunOptions {
-  bool quick = false;  // Case::quick_segments (and quick_integrators) instead of the full lists
+  bool quick = false;  // the smaller matrix of matrix(c, true)
   // A relaxation shorter than min_timed_ms is run again, up to max_runs in
   // all, and the fastest run is reported: one run of a small model is too
   // short to time. The repeats must agree bit for bit (DESIGN: deterministic).
@@ -31,7 +31,10 @@ struct RunOptions {
 };
 
 // In table order: formulation, then integrator, then segments. Every setting
-// starts from the case's default solver settings.
+// starts from the case's default solver settings. Quick (CI): every
+// formulation and integrator at the coarsest of Case::quick_segments (does
+// it run?), and the default formulation and integrator at all of them (does
+// the default pass?).
 std::vector<Setting> matrix(const Case& c, bool quick);
 bool is_default(const Case& c, const Setting& s);
 Row run_setting(const Case& c, const Setting& s, const RunOptions& options);

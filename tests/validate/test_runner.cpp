@@ -64,11 +64,19 @@ TEST_CASE("validate: a default row passes within tolerance and fails outside it,
 
 TEST_CASE("validate: the matrix and --quick's smaller one") {
   Case c = synthetic([](const Setting&) { return outcome(0, true); });
-  CHECK(matrix(c, false).size() == 4);  // 1 formulation x 2 integrators x 2 resolutions
-  CHECK(matrix(c, true).size() == 2);
-  c.quick_integrators = {Integrator::Leapfrog};
-  CHECK(matrix(c, true).size() == 1);
-  CHECK(matrix(c, false).size() == 4);
+  c.formulations = {"bar", "beam"};
+  c.segments = {4, 8, 16};
+  c.quick_segments = {8, 4};
+  CHECK(matrix(c, false).size() == 12);  // 2 formulations x 2 integrators x 3 resolutions
+  // Quick: all four at the coarsest (4), and the default (bar, leapfrog) at 8 too.
+  const std::vector<Setting> quick = matrix(c, true);
+  REQUIRE(quick.size() == 5);
+  int at_coarsest = 0;
+  for (const Setting& s : quick) {
+    if (s.segments == 4) ++at_coarsest;
+    else CHECK((s.formulation == "bar" && s.solver.integrator == Integrator::Leapfrog));
+  }
+  CHECK(at_coarsest == 4);
 }
 
 TEST_CASE("validate: every registered case names a reference and runs its default in its quick list") {
