@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the benchmarks (Release, in ./build) and runs them, printing tables.
 #
-#   bench/run.sh [throughput|rule_cost|meshing] [options...]
+#   bench/run.sh [throughput|rule_cost|meshing|constraint_solvers] [options...]
 #
 # Without a selector every benchmark runs and the options go to the first two
 # (e.g. --sizes 10K,100K); with one, only that benchmark runs and gets the
@@ -14,10 +14,10 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build"
 cd "$root"
 
-benches=(throughput rule_cost meshing)
+benches=(throughput rule_cost meshing constraint_solvers)
 selected=0
 case "${1:-}" in
-  throughput | rule_cost | meshing)
+  throughput | rule_cost | meshing | constraint_solvers)
     benches=("$1")
     selected=1
     shift
@@ -46,7 +46,7 @@ cmake --build "$build" --target "${targets[@]}"
 
 for b in "${benches[@]}"; do
   echo
-  if [[ $b == meshing && $selected -eq 0 ]]; then
+  if [[ ($b == meshing || $b == constraint_solvers) && $selected -eq 0 ]]; then
     "$build/bench/bench_$b"
   else
     "$build/bench/bench_$b" "$@"

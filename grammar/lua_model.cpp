@@ -118,7 +118,8 @@ Damping parse_damping(const std::string& name, const char* fn) {
 
 const std::initializer_list<const char*> kSettingKeys = {
     "dt",       "damping",   "viscous",        "geometric_factor", "mass_factor", "gravity",
-    "integrator", "mass_mode", "vie_iterations", "vie_dt",           "mixed_switch"};
+    "integrator", "mass_mode", "vie_iterations", "vie_dt",           "mixed_switch",
+    "mixed_implicit"};
 
 void apply_settings(lua_State* L, int idx, Scene& s, const char* fn) {
   SolverSettings& st = s.solver.settings;
@@ -147,6 +148,10 @@ void apply_settings(lua_State* L, int idx, Scene& s, const char* fn) {
   st.vie_iterations = int(iterations);
   st.vie_dt = field_number(L, idx, "vie_dt", fn, st.vie_dt);
   if (!(st.vie_dt >= 0) || !std::isfinite(st.vie_dt)) key_error(fn, "vie_dt", "must be >= 0 (0: dt)");
+  const std::string implicit = field_string(L, idx, "mixed_implicit", fn, integrator_name(st.mixed_implicit));
+  if (implicit == "vie") st.mixed_implicit = Integrator::VariationalImplicitEuler;
+  else if (implicit == "projective") st.mixed_implicit = Integrator::ProjectiveDynamics;
+  else key_error(fn, "mixed_implicit", "must be \"vie\" or \"projective\", got \"" + implicit + "\"");
   st.mixed_switch = field_number(L, idx, "mixed_switch", fn, st.mixed_switch);
   if (!(st.mixed_switch > 0 && st.mixed_switch < 1)) key_error(fn, "mixed_switch", "must be in (0, 1)");
 }
@@ -195,7 +200,8 @@ void record_settings(Scene& s) {
            " viscous=" + Trace::number(st.viscous) + " geometric_factor=" + Trace::number(st.geometric_factor) +
            " mass_factor=" + Trace::number(st.mass_factor) + " integrator=" + integrator_name(st.integrator) +
            " mass_mode=" + mass_mode_name(st.mass_mode) + " vie_iterations=" + std::to_string(st.vie_iterations) +
-           " vie_dt=" + Trace::number(st.vie_dt) + " mixed_switch=" + Trace::number(st.mixed_switch));
+           " vie_dt=" + Trace::number(st.vie_dt) + " mixed_switch=" + Trace::number(st.mixed_switch) +
+           " mixed_implicit=" + integrator_name(st.mixed_implicit));
   s.record("gravity " + Trace::vec(s.model.gravity));
 }
 
@@ -619,6 +625,8 @@ int l_settings(lua_State* L) {
   lua_setfield(L, -2, "vie_dt");
   lua_pushnumber(L, st.mixed_switch);
   lua_setfield(L, -2, "mixed_switch");
+  lua_pushstring(L, integrator_name(st.mixed_implicit));
+  lua_setfield(L, -2, "mixed_implicit");
   lua_pushstring(L, s.solver.phase());
   lua_setfield(L, -2, "phase");
   return 1;

@@ -291,6 +291,7 @@ std::string write_document(const Model& m, const SolverSettings& s) {
   w.attr("vie_iterations", unsigned(s.vie_iterations));
   w.attr("vie_dt", s.vie_dt);
   w.attr("mixed_switch", s.mixed_switch);
+  w.attr("mixed_implicit", integrator_name(s.mixed_implicit));
   w.close();
 
   w.open("gravity");
@@ -686,6 +687,12 @@ void Reader::read_solver(const tinyxml2::XMLElement* e, SolverSettings& s) const
     auto mm = parse_mass_mode(name);
     if (!mm) a.bad("mass_mode", std::string("is \"") + name + "\"; expected fictitious or physical");
     s.mass_mode = *mm;
+  }
+  if (const char* name = a.raw("mixed_implicit")) {
+    auto i = parse_integrator(name);
+    if (!i || (*i != Integrator::VariationalImplicitEuler && *i != Integrator::ProjectiveDynamics))
+      a.bad("mixed_implicit", std::string("is \"") + name + "\"; expected vie or projective");
+    else s.mixed_implicit = *i;
   }
   s.vie_iterations = int(a.real("vie_iterations", s.vie_iterations));
   s.vie_dt = a.real("vie_dt", s.vie_dt);

@@ -246,6 +246,11 @@ void replay_trace(std::istream& in, const std::string& name, Model& m, Solver& s
             auto i = parse_integrator(value);
             if (!i) throw ModelError(r.where + ": unknown integrator '" + value + "'");
             s.settings.integrator = *i;
+          } else if (key == "mixed_implicit") {
+            auto i = parse_integrator(value);
+            if (!i || (*i != Integrator::VariationalImplicitEuler && *i != Integrator::ProjectiveDynamics))
+              throw ModelError(r.where + ": mixed_implicit must be vie or projective, got '" + value + "'");
+            s.settings.mixed_implicit = *i;
           } else if (key == "mass_mode") {
             auto mm = parse_mass_mode(value);
             if (!mm) throw ModelError(r.where + ": unknown mass mode '" + value + "'");

@@ -36,6 +36,7 @@ std::size_t Model::add_joint(ParticleId p, double angle, double stiffness) {
     throw ModelError("joint: particle " + std::to_string(p) + " is not an interior crossing of exactly two beams");
   if (!std::isfinite(angle)) throw ModelError("joint: the angle must be finite");
   if (!(stiffness > 0) || !std::isfinite(stiffness)) throw ModelError("joint: the stiffness must be > 0");
+  ++revision;
   joints.items.push_back(RotationalJoint{p, angle, stiffness});
   return joints.size() - 1;
 }

@@ -115,6 +115,7 @@ void Model::free_dart(Dart d) {
 }
 
 void Model::embed(Dart d, ParticleId p) {
+  ++revision;
   dart_particle[d] = p;
   Dart head = particles.first_dart[p];
   if (head == kNone) {
@@ -132,6 +133,7 @@ void Model::embed(Dart d, ParticleId p) {
 }
 
 void Model::unembed(Dart d) {
+  ++revision;
   ParticleId p = dart_particle[d];
   Dart n = ring_next[d], pr = ring_prev[d];
   if (n == d) {
@@ -162,6 +164,7 @@ std::vector<Dart> Model::darts_of(ParticleId p) const {
 // --- bars --------------------------------------------------------------------
 
 void Model::set_edge_rest_length(Dart d, double length) {
+  ++revision;
   map.for_orbit(kEdgeOrbit, d, [&](Dart x) {
     rest_length[x] = length;
     return true;
@@ -190,6 +193,7 @@ void Model::add_bar(Dart d) {
 // 5.5.2.3: the elements of passive particles leave the computation); only
 // awake elements lump their mass.
 void Model::bind_bar(ElementIndex e) {
+  ++revision;
   Bar& bar = bars[e];
   bar.i = dart_particle[bar.dart];
   bar.j = dart_particle[map.alpha(0, bar.dart)];
@@ -215,6 +219,7 @@ void Model::repoint_bar(ElementIndex e) {
 }
 
 void Model::unbind_bar(ElementIndex e) {
+  ++revision;
   if (e >= bars.awake) return;
   const Bar& bar = std::as_const(bars)[e];
   double half = 0.5 * bar.line_mass * bar.rest_length;
@@ -237,6 +242,7 @@ void Model::remove_bar(Dart d) {
 // --- hinges ------------------------------------------------------------------
 
 void Model::add_hinge(Dart d) {
+  ++revision;
   Dart e = map.alpha(1, d);
   ElementIndex h = static_cast<ElementIndex>(hinges.size());
   Hinge hinge{};
@@ -249,6 +255,7 @@ void Model::add_hinge(Dart d) {
 }
 
 void Model::remove_hinge(Dart d) {
+  ++revision;
   ElementIndex h = dart_hinge[d];
   if (h == kNone) return;
   const Dart hd = std::as_const(hinges)[h].dart;
@@ -262,6 +269,7 @@ void Model::repoint_hinge(ElementIndex h) {
 }
 
 void Model::refresh_hinge(Dart d) {
+  ++revision;
   ElementIndex h = dart_hinge[d];
   if (h == kNone) return;
   Hinge& hinge = hinges[h];
@@ -317,6 +325,7 @@ void Model::add_beam6(Dart d) {
 }
 
 void Model::bind_beam6(ElementIndex e) {
+  ++revision;
   Beam6& b = beam6s[e];
   const Dart other = map.alpha(0, b.dart);
   b.i = dart_particle[b.dart];
@@ -347,6 +356,7 @@ void Model::repoint_beam6(ElementIndex e) {
 }
 
 void Model::unlump_beam6(ElementIndex e) {
+  ++revision;
   if (e >= beam6s.awake) return;
   const Beam6& b = std::as_const(beam6s)[e];
   const double half = 0.5 * b.line_mass * b.rest_length;
@@ -437,6 +447,7 @@ void Model::rebuild_elements() {
 
 void Model::set_lock(ParticleId p, std::uint8_t bits) {
   require_particle(p, "lock");
+  ++revision;
   particles.lock[p] = bits;
 }
 
@@ -457,6 +468,7 @@ void Model::set_moment(ParticleId p, const Vec3& m) {
 void Model::set_passive(ParticleId p, bool passive) {
   require_particle(p, "set_passive");
   if (bool(particles.passive[p]) == passive) return;
+  ++revision;
   particles.passive[p] = passive;
   particles.refresh_active(p);
   if (passive) {  // frozen where it is: nothing left to integrate or report
@@ -496,6 +508,7 @@ void Model::set_load(ParticleId p, const Vec3& f) {
 void Model::set_point_mass(ParticleId p, double kg) {
   require_particle(p, "mass");
   if (!(kg >= 0)) throw ModelError("mass: must be a non-negative number of kg");
+  ++revision;
   particles.point_mass[p] = kg;
 }
 

@@ -186,12 +186,20 @@ class Model {
   // cost proportional to what changed.
   void begin_transaction() { map.undo_log().begin(); }
   void commit_transaction() { map.undo_log().commit(); }
-  void rollback_transaction() { map.undo_log().rollback(); }
+  void rollback_transaction() {
+    map.undo_log().rollback();
+    ++revision;
+  }
   bool in_transaction() { return map.undo_log().recording(); }
 
   // While `changes` points somewhere, particle and block creation and
   // deletion are appended to it.
   ChangeSet* changes = nullptr;
+
+  // Moves whenever elements, embeddings, locks, passivity, point masses or
+  // rest lengths may have changed (never goes back, not even on rollback):
+  // a solver that caches a factorisation compares it in O(1) per step.
+  std::uint64_t revision = 0;
 
   GMap map;
   Particles particles;

@@ -176,6 +176,7 @@ std::vector<Model::Triangle> Model::patch_triangles(BlockId b, std::vector<CstRe
 bool Model::edge_has_bar(Dart d) const { return !(is_cst_patch(dart_block[d]) && !map.is_free(2, d)); }
 
 void Model::add_cst(Dart d) {
+  ++revision;
   const ElementIndex e = static_cast<ElementIndex>(csts.size());
   Cst c{};
   c.membrane = blocks[dart_block[d]].membrane;
@@ -187,6 +188,7 @@ void Model::add_cst(Dart d) {
 }
 
 void Model::bind_cst(ElementIndex e) {
+  ++revision;
   Cst& c = csts[e];
   const Dart x = map.alpha(0, c.dart);
   c.i = dart_particle[c.dart];
@@ -203,6 +205,7 @@ void Model::place_cst(ElementIndex e) {
 }
 
 void Model::remove_cst(Dart d) {
+  ++revision;
   const ElementIndex e = dart_cst[d];
   if (e == kNone) return;
   csts.erase(e, [this](ElementIndex k) { dart_cst[std::as_const(csts)[k].dart] = k; });

@@ -1,6 +1,7 @@
 // The mixed solver of thesis 5.4.2.2 (fig. 5.17): Leapfrog while the model
 // is far from equilibrium, where small steps make large changes, and the
-// Variational Implicit Euler with its larger step (vie_dt) near it.
+// Variational Implicit Euler with its larger step (vie_dt) near it, or, with
+// mixed_implicit = ProjectiveDynamics, the prefactored projective step.
 // Near equilibrium means: the residual at a step's start fell to
 // mixed_switch (default 1 %) of the largest residual seen in this Leapfrog
 // phase. The VIE phase ends when the residual grows above twice the one it
@@ -27,7 +28,8 @@ void Solver::integrate_mixed() {
     reset_motion();
   }
   if (mixed_implicit_) {
-    integrate_vie();
+    if (settings.mixed_implicit == Integrator::ProjectiveDynamics) integrate_projective();
+    else integrate_vie();
     time_ += vie_dt();
   } else {
     integrate_leapfrog();

@@ -86,7 +86,7 @@ std::optional<MassMode> parse_mass_mode(std::string_view name) {
 
 const char* Solver::phase() const {
   if (settings.integrator != Integrator::Mixed) return integrator_name(settings.integrator);
-  return mixed_implicit_ ? "vie" : "leapfrog";
+  return mixed_implicit_ ? integrator_name(settings.mixed_implicit) : "leapfrog";
 }
 
 namespace {

@@ -46,8 +46,8 @@ enum class Integrator { Leapfrog, SymplecticEuler, VelocityVerlet, Midpoint, RK4
 inline constexpr std::array<Integrator, 5> kIntegrators = {Integrator::Leapfrog, Integrator::SymplecticEuler,
                                                           Integrator::VelocityVerlet, Integrator::Midpoint,
                                                           Integrator::RK4};
-inline constexpr std::array<Integrator, 2> kConstraintIntegrators = {Integrator::VariationalImplicitEuler,
-                                                                     Integrator::Mixed};
+inline constexpr std::array<Integrator, 3> kConstraintIntegrators = {
+    Integrator::VariationalImplicitEuler, Integrator::ProjectiveDynamics, Integrator::Mixed};
 // "leapfrog", "symplectic_euler", "velocity_verlet", "midpoint", "rk4",
 // "vie", "projective", "mixed".
 const char* integrator_name(Integrator i);
@@ -87,14 +87,19 @@ struct SolverSettings {
   Integrator integrator = Integrator::Leapfrog;
   MassMode mass_mode = MassMode::Fictitious;
   // Constraint-based solvers: local-global iterations per step, and their
-  // time step (0: dt). Fictitious masses always follow eq. 3.4 at dt, so a
-  // vie_dt above dt weakens the momentum term M / vie_dt^2 of eq. 3.57.
+  // time step. Fictitious masses always follow eq. 3.4 at dt, so a vie_dt
+  // above dt weakens the momentum term M / vie_dt^2 of eq. 3.57. 0 means dt
+  // with physical masses (true dynamics) and 100 dt with fictitious ones
+  // (form-finding: the momentum term 1e-4 of its explicit weight, the
+  // fastest measured, see bench_constraint_solvers).
   int vie_iterations = 4;
   double vie_dt = 0;
-  // Mixed: VIE once the residual fell below mixed_switch times its peak in
-  // the Leapfrog phase; Leapfrog again when it grows above twice the
-  // residual VIE started from (a load or topology change).
+  // Mixed: the implicit phase (VariationalImplicitEuler, the thesis', or
+  // ProjectiveDynamics) once the residual fell below mixed_switch times its
+  // peak in the Leapfrog phase; Leapfrog again when it grows above twice
+  // the residual the implicit phase started from (a load or topology change).
   double mixed_switch = 0.01;
+  Integrator mixed_implicit = Integrator::VariationalImplicitEuler;
 };
 
 struct RunResult {
@@ -137,8 +142,10 @@ class Solver {
   double time() const { return time_; }
   std::uint64_t kinetic_resets() const { return resets_; }
   std::uint64_t force_evaluations() const { return evaluations_; }  // a local step counts as one
-  // Mixed: "leapfrog" or "vie", the phase the last step ran in; else the integrator's name.
+  // Mixed: "leapfrog", "vie" or "projective", the phase of the last step; else the integrator's name.
   const char* phase() const;
+  // ProjectiveDynamics: how often its global matrix was factored.
+  std::uint64_t factorizations() const;
   // The force the supports exert on a locked particle (minus the residual
   // force along its locked axes) at the start of the last step.
   Vec3 reaction(ParticleId p) const;
@@ -167,11 +174,15 @@ class Solver {
   void integrate_rk4();
   void synchronize_velocities();  // Leapfrog's v(t - dt/2) -> v(t)
   // vie.cpp, projective.cpp, mixed.cpp
-  double vie_dt() const { return settings.vie_dt > 0 ? settings.vie_dt : settings.dt; }
+  double vie_dt() const {
+    if (settings.vie_dt > 0) return settings.vie_dt;
+    return settings.mass_mode == MassMode::Physical ? settings.dt : 100 * settings.dt;
+  }
   void integrate_vie();
   // The projections of every element at (x, q): pulls into Fs_, weights into
   // Ss_, turns into Ts_ and rotational weights into Ks_.
   void local_step(const Vec3* x, const Quat* q);
+  void rotation_global_step(double inv_dt2);  // eq. 3.63 for the frames, VIE and PD alike
   void integrate_projective();
   void integrate_mixed();
   void start_implicit_step(double dt);  // x0 of eq. 3.57 into x0_, first guess into xs_, qs_
@@ -207,6 +218,7 @@ class Solver {
   std::vector<double> cst_weight_;   // local step: the CST stiffnesses
   std::vector<Vec3> x0_, r0_;        // implicit: x0 of eq. 3.57, and its rotation vector from the frame
   std::shared_ptr<ProjectiveSystem> projective_;  // projective.hpp, built on first use
+  std::vector<double> projective_mass_;             // M frozen with its factorisation
   bool mixed_implicit_ = false;      // Mixed: in its VIE phase
   double mixed_peak_ = 0, mixed_entry_ = 0;
 };

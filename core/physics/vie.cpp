@@ -123,15 +123,22 @@ void Solver::integrate_vie() {
       const double m = mass_[p] * inv_dt2;
       xs_[p] += ((m * (x0_[p] - xs_[p]) + Fs_[p]) / (m + Ss_[p])).cwiseProduct(free_axes(lock[p]));
     }
-    for (ParticleId p : P.rotational.raw()) {
-      if (!active[p]) continue;
-      const double m = inertia_[p] * inv_dt2;
-      const Vec3 turned = rotation_vector(qs_[p] * P.orientation[p].conjugate());
-      const Vec3 r = ((m * (r0_[p] - turned) + Ts_[p]) / (m + Ks_[p])).cwiseProduct(free_rotation_axes(lock[p]));
-      qs_[p] = Quat(rotation_of(r) * qs_[p]).normalized();
-    }
+    rotation_global_step(inv_dt2);
   }
   finish_implicit_step(dt);
+}
+
+void Solver::rotation_global_step(double inv_dt2) {
+  const Particles& P = model_.particles;
+  const std::uint8_t* active = P.active.data();
+  const std::uint8_t* lock = P.lock.data();
+  for (ParticleId p : P.rotational.raw()) {
+    if (!active[p]) continue;
+    const double m = inertia_[p] * inv_dt2;
+    const Vec3 turned = rotation_vector(qs_[p] * P.orientation[p].conjugate());
+    const Vec3 r = ((m * (r0_[p] - turned) + Ts_[p]) / (m + Ks_[p])).cwiseProduct(free_rotation_axes(lock[p]));
+    qs_[p] = Quat(rotation_of(r) * qs_[p]).normalized();
+  }
 }
 
 }  // namespace tendril
