@@ -38,8 +38,8 @@ void ProjectiveSystem::factor(const Key& key, const Model& m, const Vec3* x, con
   std::array<int, 3> rows{};
   for (int a = 0; a < 3; ++a) {
     row_[a].assign(n, -1);
-    for (std::size_t p = 0; p < n; ++p)
-      if (P.active[p] && !(P.lock[p] & (kLockX << a))) row_[a][p] = rows[a]++;
+    for (ParticleId p : P.integrated.raw())
+      if (!(P.lock[p] & (kLockX << a))) row_[a][p] = rows[a]++;
   }
   const double gf = key.geometric_factor;
   for (int a = 0; a < 3; ++a) {
@@ -52,18 +52,21 @@ void ProjectiveSystem::factor(const Key& key, const Model& m, const Vec3* x, con
     }
     const std::vector<int>& row = row_[a];
     Triplets t;
-    for (std::size_t p = 0; p < n; ++p)
+    for (ParticleId p : P.integrated.raw())
       if (row[p] >= 0) t.emplace_back(row[p], row[p], inertia[p] + diagonal[p]);
-    for (const Bar& b : m.bars.items) {
+    for (const Bar* bp = m.bars.awake_begin(); bp != m.bars.awake_end(); ++bp) {  // dormant ones never act
+      const Bar& b = *bp;
       const double l = (x[b.j] - x[b.i]).norm(), k = b.EA / b.rest_length;
       const double T = b.prestress + k * (l - b.rest_length);
       add_term<2>(t, row, {b.i, b.j}, {-1, 1}, k + (l > 0 && T > 0 ? gf * T / l : 0.0));
     }
-    for (const Hinge& h : m.hinges.items) {
+    for (const Hinge* hp = m.hinges.awake_begin(); hp != m.hinges.awake_end(); ++hp) {
+      const Hinge& h = *hp;
       const double l = 0.5 * ((x[h.j] - x[h.i]).norm() + (x[h.k] - x[h.j]).norm());
       add_term<3>(t, row, {h.i, h.j, h.k}, {1, -2, 1}, h.EI / (l * l * l));
     }
-    for (const Beam6& b : m.beam6s.items) {
+    for (const Beam6* bp = m.beam6s.awake_begin(); bp != m.beam6s.awake_end(); ++bp) {
+      const Beam6& b = *bp;
       const double L = b.rest_length;
       const double w = std::max(b.EA / L, 12 * std::max(b.EIy, b.EIz) / (L * L * L));
       add_term<2>(t, row, {b.i, b.j}, {-1, 1}, w);
@@ -88,14 +91,13 @@ void ProjectiveSystem::factor(const Key& key, const Model& m, const Vec3* x, con
 }
 
 void ProjectiveSystem::solve(const Model& m, Vec3* rhs) {
-  const std::size_t n = m.particles.capacity();
+  const std::vector<ParticleId>& integrated = m.particles.integrated.raw();
   for (int a = 0; a < 3; ++a) {
     const std::vector<int>& row = row_[a];
-    for (std::size_t p = 0; p < n; ++p)
+    for (ParticleId p : integrated)
       if (row[p] >= 0) b_[a][row[p]] = rhs[p][a];
-    if (b_[a].size() == 0) continue;
-    b_[a] = factor_[a]->solve(b_[a]);
-    for (std::size_t p = 0; p < n; ++p) rhs[p][a] = row[p] >= 0 ? b_[a][row[p]] : 0.0;
+    if (b_[a].size() != 0) b_[a] = factor_[a]->solve(b_[a]);
+    for (ParticleId p : integrated) rhs[p][a] = row[p] >= 0 ? b_[a][row[p]] : 0.0;
   }
 }
 
@@ -105,7 +107,7 @@ void Solver::integrate_projective() {
   const double dt = vie_dt(), inv_dt2 = 1 / (dt * dt);
   const Particles& P = model_.particles;
   const std::size_t n = P.capacity();
-  const std::uint8_t* active = P.active.data();
+  const std::vector<ParticleId>& integrated = P.integrated.raw();
   if (!projective_) projective_ = std::make_shared<ProjectiveSystem>();
   const ProjectiveSystem::Key key{&model_,         model_.revision, n, settings.dt, dt, settings.mass_factor,
                                   settings.geometric_factor, int(settings.mass_mode)};
@@ -113,8 +115,7 @@ void Solver::integrate_projective() {
     // Fictitious masses are eq. 3.4's at the factorisation and stay with it.
     projective_mass_.assign(mass_.begin(), mass_.end());
     std::vector<double> inertia(n, 0.0), diagonal(n, 0.0);
-    for (std::size_t p = 0; p < n; ++p)
-      if (active[p]) inertia[p] = projective_mass_[p] * inv_dt2;
+    for (ParticleId p : integrated) inertia[p] = projective_mass_[p] * inv_dt2;
     if (!model_.csts.items.empty()) {
       cst_weight_.assign(n, 0.0);
       accumulate_cst_forces(P.position.data(), vs_.data(), cst_weight_.data());
@@ -122,17 +123,14 @@ void Solver::integrate_projective() {
     }
     projective_->factor(key, model_, P.position.data(), inertia, diagonal);
   }
-  for (std::size_t p = 0; p < n; ++p)
-    if (active[p]) mass_[p] = projective_mass_[p];
+  for (ParticleId p : integrated) mass_[p] = projective_mass_[p];
   start_implicit_step(dt);
   const std::uint8_t* lock = P.lock.data();
   for (int it = 0; it < settings.vie_iterations; ++it) {
     local_step(xs_.data(), qs_.data());
-    for (std::size_t p = 0; p < n; ++p)
-      vs_[p] = active[p] ? Vec3(mass_[p] * inv_dt2 * (x0_[p] - xs_[p]) + Fs_[p]) : Vec3::Zero();
+    for (ParticleId p : integrated) vs_[p] = mass_[p] * inv_dt2 * (x0_[p] - xs_[p]) + Fs_[p];
     projective_->solve(model_, vs_.data());  // the global step
-    for (std::size_t p = 0; p < n; ++p)
-      if (active[p]) xs_[p] += vs_[p].cwiseProduct(free_axes(lock[p]));
+    for (ParticleId p : integrated) xs_[p] += vs_[p].cwiseProduct(free_axes(lock[p]));
     rotation_global_step(inv_dt2);
   }
   finish_implicit_step(dt);

@@ -114,7 +114,6 @@ void Solver::integrate_vie() {
   const double dt = vie_dt();
   start_implicit_step(dt);
   const Particles& P = model_.particles;
-  const std::uint8_t* active = P.active.data();
   const std::uint8_t* lock = P.lock.data();
   const double inv_dt2 = 1 / (dt * dt);
   for (int it = 0; it < settings.vie_iterations; ++it) {
