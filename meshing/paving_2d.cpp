@@ -2,6 +2,8 @@
 
 #include <CGAL/Polygon_2_algorithms.h>
 
+#include <limits>
+#include <optional>
 #include <string>
 
 #include "paving_paver.hpp"
@@ -9,8 +11,9 @@
 namespace tendril::meshing {
 namespace detail {
 
-Paver::Paver(const std::vector<Vec2>& points, std::vector<std::vector<Index>> fronts, const PavingOptions& o)
-    : pts_(points), fronts0_(std::move(fronts)), n_(points.size()), opt_(o) {
+Paver::Paver(const std::vector<Vec2>& points, std::vector<std::vector<Index>> fronts, const PavingOptions& o,
+             bool thin_rows)
+    : pts_(points), fronts0_(std::move(fronts)), n_(points.size()), opt_(o), thin_rows_(thin_rows) {
   for (Index i = 0; i < n_; ++i) parent_.push_back(i);
   double perimeter = 0;
   for (const std::vector<Index>& f : fronts0_)
@@ -45,7 +48,7 @@ void Paver::pave_front(std::vector<Index> front, int& row) {
     if (m <= 8) ok = close(front, false) || close(front, true);
     else
       ok = advance(front, row, 1.0) || advance(front, row, 0.6) || close(front, false) || split(front) ||
-           close(front, true);
+           (thin_rows_ && advance(front, row, 0.35)) || close(front, true);
     if (!ok)
       throw ModelError("paving: the front of " + std::to_string(m) + " nodes after " + std::to_string(row) +
                        " rows could not advance without self-intersection (narrow or strongly concave "
@@ -90,6 +93,43 @@ Mesh2 Paver::finish() {
 
 using namespace detail;
 
+namespace {
+
+double worst_jacobian(const Mesh2& mesh) {
+  double j = 1;
+  for (const QuadIndices& q : mesh.quads)
+    j = std::min(j, jacobian({mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]}));
+  return j;
+}
+
+// The paver's plain strategy first; where it fails or leaves a quad below a
+// scaled Jacobian of 0.5, a second run that may also advance by thin rows
+// (0.35 h) before forcing a closure, which gets some small, strongly concave
+// fronts (the middle of a star) through. The better result is kept, so the
+// second run never makes a mesh worse.
+Mesh2 pave_best(const std::vector<Vec2>& points, const std::vector<std::vector<Index>>& fronts,
+                const PavingOptions& options) {
+  std::optional<Mesh2> first;
+  std::string error;
+  double score = -std::numeric_limits<double>::infinity();
+  try {
+    first = Paver(points, fronts, options).run();
+    score = worst_jacobian(*first);
+  } catch (const ModelError& e) {
+    error = e.what();
+  }
+  if (score >= 0.5) return *first;
+  try {
+    Mesh2 second = Paver(points, fronts, options, true).run();
+    if (worst_jacobian(second) > score) return second;
+  } catch (const ModelError&) {
+  }
+  if (first) return *first;
+  throw ModelError(error);
+}
+
+}  // namespace
+
 
 bool simple_polygon(const std::vector<Vec2>& loop) {
   const std::size_t n = loop.size();
@@ -119,7 +159,7 @@ Mesh2 pave_2d(const std::vector<Vec2>& loop, const PavingOptions& options) {
   if (signed_area(loop) <= 0) throw ModelError("paving: the boundary must run counter-clockwise");
   std::vector<Index> front(loop.size());
   for (Index i = 0; i < front.size(); ++i) front[i] = i;
-  return Paver(loop, {front}, options).run();
+  return pave_best(loop, {front}, options);
 }
 
 namespace {
@@ -173,7 +213,7 @@ Mesh2 pave_2d(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2
     if (signed_area(hole) > 0) std::reverse(front.begin(), front.end());  // the region on its left
     fronts.push_back(front);
   }
-  return Paver(points, fronts, options).run();
+  return pave_best(points, fronts, options);
 }
 
 }  // namespace tendril::meshing

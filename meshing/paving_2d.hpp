@@ -35,10 +35,13 @@
 //  - splitting: a front that can neither advance nor close is cut in two
 //    by one quad across a neck narrower than a row (then zipped), and each
 //    piece is paved on its own.
+//  - a second strategy (pave_2d): where the plain one fails or leaves a
+//    quad below a scaled Jacobian of 0.5, a run that may also advance thin
+//    rows (0.35 h) before forcing a closure; the better mesh is kept.
 // Not done: wedges on concave outer fronts, clean-up by element deletion,
-// and size grading inside the domain. Strongly concave boundaries (stars,
-// T-junctions) and small holes near one side still mesh but with a worst
-// scaled Jacobian nearer 0.2-0.5 than the 0.7 of convex or orthogonal ones.
+// and size grading inside the domain. Some strongly concave boundaries
+// (T-junctions at fine spacing, deeply notched stars) and small holes near
+// one side still mesh with a worst scaled Jacobian of 0.1-0.5, or fail.
 #include <Eigen/Core>
 #include <vector>
 

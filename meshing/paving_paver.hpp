@@ -60,7 +60,10 @@ class Paver {
   // `points` are the given boundary nodes; each of `fronts` is a cycle of
   // indices into them with the region on its left (the outer loop
   // counter-clockwise, holes clockwise).
-  Paver(const std::vector<Vec2>& points, std::vector<std::vector<Index>> fronts, const PavingOptions& o);
+  // `thin_rows`: a front that can neither advance nor close may also try a
+  // row of 0.35 h before a forced closure (see pave_best in paving_2d.cpp).
+  Paver(const std::vector<Vec2>& points, std::vector<std::vector<Index>> fronts, const PavingOptions& o,
+        bool thin_rows = false);
   Mesh2 run();
 
  private:
@@ -72,6 +75,7 @@ class Paver {
   std::size_t n_;
   double h_ = 0;
   PavingOptions opt_;
+  bool thin_rows_ = false;
 
   Index add(const Vec2& p) {
     pts_.push_back(p);

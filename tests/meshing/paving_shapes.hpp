@@ -1,5 +1,6 @@
 #pragma once
 // Boundary loops for the paving tests and measurements.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -36,6 +37,22 @@ inline std::vector<Vec3> circle_loop(int n, double r, double wave = 0) {
   for (int i = 0; i < n; ++i) {
     const double t = 2 * std::numbers::pi * i / n;
     out.push_back(Vec3(r * std::cos(t), r * std::sin(t), wave * std::cos(2 * t)));
+  }
+  return out;
+}
+
+// A star of `points` tips on radius r_out and notches on r_in, every side
+// cut into pieces of about `spacing`.
+inline std::vector<Vec3> star_loop(int points, double r_out, double r_in, double spacing = 1) {
+  std::vector<Vec3> corners, out;
+  for (int k = 0; k < 2 * points; ++k) {
+    const double t = std::numbers::pi * k / points, r = k % 2 ? r_in : r_out;
+    corners.push_back(Vec3(r * std::cos(t), r * std::sin(t), 0));
+  }
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const Vec3 a = corners[i], b = corners[(i + 1) % corners.size()];
+    const int pieces = std::max(1, int(std::lround((b - a).norm() / spacing)));
+    for (int k = 0; k < pieces; ++k) out.push_back(a + (b - a) * (double(k) / pieces));
   }
   return out;
 }

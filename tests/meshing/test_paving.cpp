@@ -87,6 +87,16 @@ TEST_CASE("paving: circles reach a minimum scaled Jacobian of 0.7") {
   CHECK(c64.irregular_fraction <= 0.06);
 }
 
+TEST_CASE("paving: stars, whose small concave middle fronts need thin rows or a second strategy") {
+  // Five tips: the plain strategy cannot advance the star-shaped middle
+  // front; the second run's thin rows get it through.
+  const auto five = star_loop(5, 10, 5);
+  REQUIRE(five.size() == 70);
+  CHECK(measure("star 5, 10/5 m", five).jacobian_min >= 0.7);
+  CHECK(measure("star 5, 10/6 m", star_loop(5, 10, 6)).jacobian_min >= 0.7);
+  CHECK(measure("star 6, 10/6 m", star_loop(6, 10, 6)).jacobian_min >= 0.7);
+}
+
 TEST_CASE("paving: a saddle loop gets a harmonic interior between its heights") {
   const double wave = 1.5;
   const auto loop = circle_loop(32, 16 / std::numbers::pi, wave);
