@@ -62,11 +62,15 @@ struct RotationalJoint {
 // sigma (eq. 3.36). Analysis: sigma is the prestress, plus the orthotropic
 // stresses of the strains against `ref` (eq. 3.37-3.39). dart: the dart of
 // its quad at i on side i -> j.
+// interior: bit 0, 1, 2 set when i, j, k is an interior vertex of the patch
+// (no boundary edge there): in form-finding such a corner is pulled along
+// the surface normal only (cst_forces.cpp).
 struct Cst {
   ParticleId i, j, k;
   Membrane membrane;
   CstReference ref;
   std::uint32_t dart;
+  std::uint8_t interior;
 };
 
 // A flat element buffer, partitioned for multi-resolution (thesis 5.5.2.3):

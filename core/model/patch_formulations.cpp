@@ -187,6 +187,23 @@ void Model::add_cst(Dart d) {
   bind_cst(e);
 }
 
+namespace {
+// A vertex of a patch is interior when no edge at it is on the boundary.
+bool interior_vertex(const GMap& map, Dart v) {
+  bool interior = true;
+  map.for_orbit(kVertexOrbit, v, [&](Dart x) {
+    interior = !map.is_free(2, x);
+    return interior;
+  });
+  return interior;
+}
+
+std::uint8_t interior_corners(const GMap& map, Dart d) {
+  const Dart x = map.alpha(0, d), y = map.alpha(0, map.alpha(1, x));
+  return std::uint8_t(interior_vertex(map, d) | interior_vertex(map, x) << 1 | interior_vertex(map, y) << 2);
+}
+}  // namespace
+
 void Model::bind_cst(ElementIndex e) {
   ++revision;
   Cst& c = csts[e];
@@ -194,6 +211,7 @@ void Model::bind_cst(ElementIndex e) {
   c.i = dart_particle[c.dart];
   c.j = dart_particle[x];
   c.k = dart_particle[map.alpha(0, map.alpha(1, x))];
+  c.interior = interior_corners(map, c.dart);
   place_cst(e);
 }
 
@@ -243,7 +261,8 @@ std::string Model::check_cst_face(Dart d) const {
   const std::string name = "CST element " + std::to_string(e);
   if (c.dart != d) return name + " does not point back to its dart";
   const Dart x = map.alpha(0, d);
-  if (c.i != dart_particle[d] || c.j != dart_particle[x] || c.k != dart_particle[map.alpha(0, map.alpha(1, x))])
+  if (c.i != dart_particle[d] || c.j != dart_particle[x] || c.k != dart_particle[map.alpha(0, map.alpha(1, x))] ||
+      c.interior != interior_corners(map, d))
     return name + " has stale particles";
   if ((e < csts.awake) != (!particles.passive[c.i] && !particles.passive[c.j] && !particles.passive[c.k]))
     return name + " is on the wrong side of the awake/dormant partition";

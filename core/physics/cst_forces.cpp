@@ -17,6 +17,16 @@
 // eps_x)) / h: eq. 3.37's gamma times (1 + eps_y), the same to first order,
 // without dividing by the current height.
 //
+// In form-finding the prescribed stresses have no in-plane stiffness: the
+// interior vertices of a patch would slide in the surface towards ever
+// smaller triangles (the mesh drift the thesis' G-strings prevent, fig.
+// 3.11). So an interior vertex takes only the component of its CST pull
+// along its normal (the sum of its triangles' area vectors); its position in
+// the surface stays where the patch put it, and the shape is the same.
+// Boundary vertices take the whole pull: it is what their edge cables,
+// beams or supports carry. Analysis has elastic in-plane stiffness and
+// takes the whole pull everywhere.
+//
 // A triangle whose area vanishes (collinear corners, twice its area below
 // 1e-10 times its longest side squared) has no plane and no normal: it
 // exerts no force and adds only its elastic stiffness.
@@ -32,6 +42,12 @@ constexpr double kDegenerate = 1e-10;
 
 void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
   const double gf = settings.geometric_factor;
+  const std::size_t capacity = model_.particles.capacity();
+  if (cst_pull_.size() != capacity) {  // grows with the particles, never per step
+    cst_pull_.assign(capacity, Vec3::Zero());
+    cst_normal_.assign(capacity, Vec3::Zero());
+  }
+  bool gathered = false;
   for (const Cst* tp = model_.csts.awake_begin(); tp != model_.csts.awake_end(); ++tp) {  // awake only
     const Cst& t = *tp;
     const Membrane& m = t.membrane;
@@ -75,9 +91,19 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
       return 0.5 * ((sx * u + tau * v) * e1 + (tau * u + sy * v) * e2);
     };
     const Vec3 fi = pull(side3), fj = pull(-b), fk = pull(a);
-    F[t.i] += fi;
-    F[t.j] += fj;
-    F[t.k] += fk;
+    const std::uint8_t along_normal = analysis ? 0 : t.interior;
+    auto add = [&](ParticleId p, int corner, const Vec3& f) {
+      if (!(along_normal >> corner & 1)) {
+        F[p] += f;
+        return;
+      }
+      cst_pull_[p] += f;  // projected below, once all its triangles are in
+      cst_normal_[p] += cst_normal_[p].dot(n) < 0 ? Vec3(-n) : n;
+      gathered = true;
+    };
+    add(t.i, 0, fi);
+    add(t.j, 1, fj);
+    add(t.k, 2, fk);
     // Eq. 3.40: the geometric stiffness of a corner under tension grows with
     // (opposite side)^2 / (twice the area), i.e. base over height; both
     // stresses count, so neither direction is left without mass.
@@ -85,6 +111,18 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
     S[t.i] += elastic[0] + g * side3.squaredNorm();
     S[t.j] += elastic[1] + g * b.squaredNorm();
     S[t.k] += elastic[2] + g * a.squaredNorm();
+  }
+  if (!gathered) return;
+  for (const Cst* tp = model_.csts.awake_begin(); tp != model_.csts.awake_end(); ++tp) {
+    const Cst& t = *tp;
+    if (t.membrane.mode != Membrane::FormFinding || !t.interior) continue;
+    for (const ParticleId p : {t.i, t.j, t.k}) {
+      const Vec3 normal = cst_normal_[p];
+      const double nn = normal.squaredNorm();
+      if (nn > 0) F[p] += (cst_pull_[p].dot(normal) / nn) * normal;
+      cst_pull_[p].setZero();
+      cst_normal_[p].setZero();
+    }
   }
 }
 

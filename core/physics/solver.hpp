@@ -215,6 +215,9 @@ class Solver {
   std::vector<Vec3> Ts_, ws_;       // stage torques, angular velocities
   std::vector<double> Ks_;          // stage rotational stiffnesses (unused but written)
   std::vector<Vec3> sum_r_, sum_w_;  // RK4's sums of L_R and K_R (eq. 3.22-3.24)
+  // cst_forces.cpp: the form-finding pull on interior patch vertices and
+  // their normals, gathered before projection (scratch, zero between calls).
+  mutable std::vector<Vec3> cst_pull_, cst_normal_;
   std::vector<double> cst_weight_;   // local step: the CST stiffnesses
   std::vector<Vec3> x0_, r0_;        // implicit: x0 of eq. 3.57, and its rotation vector from the frame
   std::shared_ptr<ProjectiveSystem> projective_;  // projective.hpp, built on first use
