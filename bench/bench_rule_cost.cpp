@@ -3,12 +3,16 @@
 // and on 1 000 000 particles, within 2x), against the same change followed
 // by a full rebuild_elements() (the approach thesis 6.1 criticises).
 //
-//   bench_rule_cost [--sizes 1K,10K,100K,1M] [--apps 200] [--steps-between 1]
+//   bench_rule_cost [--sizes 1K,10K,100K,1M] [--apps 200] [--steps-between 1] [--evict MB]
 //
 // Only the rule call (and, in the second variant, the rebuild) is timed; one
 // Solver::step() runs between applications so the model keeps integrating and
 // the caches see what a real run does to them (--steps-between 0 shows the
-// cost with the model's working set left in cache).
+// cost with the model's working set left in cache). A small model stays in
+// the caches through the step while a large one does not, so the sizes are
+// compared warm against cold; --evict MB streams through a buffer larger
+// than the last-level cache before every application, so every size is
+// measured cold and the ratio shows the algorithm's growth alone.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -104,7 +108,14 @@ struct Run {
 // rebuild_elements() inside the timed region, and each rule stops early once
 // `rebuild_budget` seconds were spent (the rebuild is O(n)).
 
-Run run(std::size_t particles, std::size_t apps, int steps_between, bool rebuild, double rebuild_budget) {
+// Writes one byte per cache line of `buffer`: afterwards none of the model is
+// left in any cache.
+void evict(std::vector<char>& buffer) {
+  for (std::size_t i = 0; i < buffer.size(); i += 64) buffer[i] = static_cast<char>(buffer[i] + 1);
+}
+
+Run run(std::size_t particles, std::size_t apps, int steps_between, bool rebuild, double rebuild_budget,
+        std::vector<char>& eviction) {
   LiveModel live = build(particles, 20240611u);
   Model& m = *live.model;
   Solver solver(m);
@@ -115,6 +126,7 @@ Run run(std::size_t particles, std::size_t apps, int steps_between, bool rebuild
   double spent = 0;
   for (std::size_t i = 0; i < n13; ++i) {
     for (int k = 0; k < steps_between; ++k) solver.step();
+    evict(eviction);
     auto t0 = Clock::now();
     m.insert_particle(live.segments[i].first, live.segments[i].second);
     if (rebuild) m.rebuild_elements();
@@ -130,6 +142,7 @@ Run run(std::size_t particles, std::size_t apps, int steps_between, bool rebuild
     for (int k = 0; k < steps_between; ++k) solver.step();
     pair[0] = live.joints[i].first;
     pair[1] = live.joints[i].second;
+    evict(eviction);
     auto t0 = Clock::now();
     m.merge(pair);
     if (rebuild) m.rebuild_elements();
@@ -146,11 +159,14 @@ Run run(std::size_t particles, std::size_t apps, int steps_between, bool rebuild
 
 int usage(const char* argv0, int code) {
   std::fprintf(code ? stderr : stdout,
-               "usage: %s [--sizes 1K,10K,100K,1M] [--apps N] [--steps-between K] [--rebuild-seconds S]\n"
+               "usage: %s [--sizes 1K,10K,100K,1M] [--apps N] [--steps-between K] [--rebuild-seconds S]"
+               " [--evict MB]\n"
                "  --sizes            particle counts (K/M suffixes)\n"
                "  --apps             applications of each rule per size (default 200)\n"
                "  --steps-between    solver steps before each application (default 1)\n"
-               "  --rebuild-seconds  time budget per rule for the patch+rebuild variant (default 4)\n",
+               "  --rebuild-seconds  time budget per rule for the patch+rebuild variant (default 4)\n"
+               "  --evict            MB streamed through before every application, to measure every size\n"
+               "                     with cold caches (more than the last-level cache; default 0)\n",
                argv0);
   return code;
 }
@@ -162,6 +178,7 @@ int main(int argc, char** argv) {
   std::size_t apps = 200;
   double rebuild_budget = 4.0;
   int steps_between = 1;
+  std::size_t evict_mb = 0;
   try {
     for (int i = 1; i < argc; ++i) {
       std::string a = argv[i];
@@ -173,6 +190,7 @@ int main(int argc, char** argv) {
       else if (a == "--apps") apps = parse_count(value());
       else if (a == "--steps-between") steps_between = std::stoi(value());
       else if (a == "--rebuild-seconds") rebuild_budget = std::stod(value());
+      else if (a == "--evict") evict_mb = parse_count(value());
       else if (a == "-h" || a == "--help") return usage(argv[0], 0);
       else throw std::runtime_error("unknown option '" + a + "'");
     }
@@ -181,8 +199,8 @@ int main(int argc, char** argv) {
     return usage(argv[0], 2);
   }
 
-  std::printf("bench_rule_cost: one rule application on a live model, %d Solver::step() before each application\n",
-              steps_between);
+  std::printf("bench_rule_cost: one rule application on a live model, %d Solver::step() before each application%s\n",
+              steps_between, evict_mb ? fmt(", %zu MB streamed through the caches before each", evict_mb).c_str() : "");
   std::puts("  model : rows of 4-particle spline beams (3 DOF) along x, ends locked, 1 N load on interior particles");
   std::puts("  rule 13: insert_particle in a random segment; rule 3: merge the end of a beam with the start of");
   std::puts("           the next one (2 mm apart) into a shared joint; every application at a different place");
@@ -205,8 +223,9 @@ int main(int argc, char** argv) {
   };
   std::vector<Flat> flat;
   for (std::size_t size : sizes) {
-    Run local = run(size, apps, steps_between, false, rebuild_budget);
-    Run full = run(size, apps, steps_between, true, rebuild_budget);
+    std::vector<char> eviction(evict_mb << 20);
+    Run local = run(size, apps, steps_between, false, rebuild_budget, eviction);
+    Run full = run(size, apps, steps_between, true, rebuild_budget, eviction);
     const std::size_t particles = std::max<std::size_t>(2, size / kPerBeam) * kPerBeam;
     auto row = [&](const char* rule, const Samples& a, const Samples& b) {
       table.add({fmt("%zu", size), fmt("%zu", particles), rule, fmt("%zu", a.us.size()), fmt("%.2f", a.mean()),
