@@ -16,6 +16,7 @@
 #include "lua_meshing.hpp"
 #include "lua_multires.hpp"
 #include "lua_patch_formulation.hpp"
+#include "lua_goals.hpp"
 #include "lua_query.hpp"
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
@@ -989,6 +990,7 @@ void register_model_meta(lua_State* L) {
   set_fn<l_torque>(L, "torque");
   add_rule_methods(L);
   add_query_methods(L);
+  add_goal_methods(L);
   add_meshing_methods(L);
   add_multires_methods(L);
   lua_setfield(L, -2, "__index");

@@ -443,6 +443,30 @@ std::string write_document(const Model& m, const SolverSettings& s) {
     }
     w.close();
   }
+  if (!m.goals.empty()) {  // goals of the constraint-based solvers, in index order
+    w.open("goals");
+    for (const Goal& g : m.goals) {
+      w.open("goal");
+      w.attr("kind", goal_kind_name(g.kind));
+      w.attr("i", dense[g.i]);
+      if (g.kind == Goal::Length) {
+        w.attr("j", dense[g.j]);
+        w.attr("length", g.length);
+      } else {
+        w.attr("x", g.point.x());
+        w.attr("y", g.point.y());
+        w.attr("z", g.point.z());
+      }
+      if (g.kind == Goal::Plane || g.kind == Goal::Line) {
+        w.attr("dx", g.direction.x());
+        w.attr("dy", g.direction.y());
+        w.attr("dz", g.direction.z());
+      }
+      w.attr("weight", g.weight);
+      w.close();
+    }
+    w.close();
+  }
   w.close();
   return std::string(out.CStr(), std::size_t(out.CStrSize() - 1));
 }
@@ -490,12 +514,18 @@ struct JointRecord {
   const tinyxml2::XMLElement* element = nullptr;
 };
 
+struct GoalRecord {
+  Goal goal;  // particle ids as in the file
+  const tinyxml2::XMLElement* element = nullptr;
+};
+
 struct Document {
   SolverSettings settings;
   Vec3 gravity = Vec3::Zero();
   std::vector<ParticleRecord> particles;  // ascending id
   std::vector<BlockRecord> blocks;        // ascending id
   std::vector<JointRecord> joints;        // in file order
+  std::vector<GoalRecord> goals;          // in file (index) order
 };
 
 class Attributes;
@@ -989,7 +1019,8 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
   std::map<unsigned, const tinyxml2::XMLElement*> particle_ids, block_ids;
   for (const tinyxml2::XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
     const std::string name = e->Name();
-    if (name != "solver" && name != "gravity" && name != "particles" && name != "blocks" && name != "joints")
+    if (name != "solver" && name != "gravity" && name != "particles" && name != "blocks" && name != "joints" &&
+        name != "goals")
       fail(e, "unknown element <" + name + "> inside <tendril>");
     if (auto it = sections.find(name); it != sections.end())
       fail(e, "<" + name + "> is already given on line " + std::to_string(it->second->GetLineNum()));
@@ -1001,6 +1032,30 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
       d.gravity = Vec3(a.real("x"), a.real("y"), a.real("z"));
       a.done();
       no_children(e);
+    } else if (name == "goals") {
+      Attributes(*this, e).done();
+      for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+        if (std::strcmp(c->Name(), "goal") != 0)
+          fail(c, std::string("unknown element <") + c->Name() + "> inside <goals>");
+        Attributes a(*this, c);
+        GoalRecord r;
+        r.element = c;
+        Goal& g = r.goal;
+        const char* kind = a.raw("kind");
+        if (!kind || !parse_goal_kind(kind, g.kind)) a.bad("kind", "must be anchor, plane, line or length");
+        g.i = a.index("i");
+        if (g.kind == Goal::Length) {
+          g.j = a.index("j");
+          g.length = a.real("length");
+        } else {
+          g.point = Vec3(a.real("x"), a.real("y"), a.real("z"));
+        }
+        if (g.kind == Goal::Plane || g.kind == Goal::Line) g.direction = Vec3(a.real("dx"), a.real("dy"), a.real("dz"));
+        g.weight = a.real("weight");
+        a.done();
+        no_children(c);
+        d.goals.push_back(r);
+      }
     } else if (name == "joints") {
       Attributes(*this, e).done();
       for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
@@ -1130,6 +1185,22 @@ void build(const Reader& reader, const Document& d, Model& m) {
       m.add_joint(it->second, j.angle, j.stiffness);
     } catch (const ModelError& e) {
       reader.fail(j.element, e.what());
+    }
+  }
+  for (const GoalRecord& r : d.goals) {
+    Goal g = r.goal;
+    auto i = id_of.find(g.i);
+    if (i == id_of.end()) reader.fail(r.element, "attribute 'i': no particle " + std::to_string(g.i));
+    g.i = i->second;
+    if (g.kind == Goal::Length) {
+      auto j = id_of.find(g.j);
+      if (j == id_of.end()) reader.fail(r.element, "attribute 'j': no particle " + std::to_string(g.j));
+      g.j = j->second;
+    }
+    try {
+      m.add_goal(g);
+    } catch (const ModelError& e) {
+      reader.fail(r.element, e.what());
     }
   }
 }

@@ -187,7 +187,24 @@ void replay_trace(std::istream& in, const std::string& name, Model& m, Solver& s
       } else if (op == "joint_angle") {
         std::size_t j = r.id();
         m.set_joint_angle(j, r.number());
-      } else if (op == "delete_particle") m.delete_particle(r.id());
+      } else if (op == "goal") {
+        Goal g;
+        if (!parse_goal_kind(r.word(), g.kind)) throw ModelError(r.where + ": unknown goal kind");
+        g.i = r.id();
+        if (g.kind == Goal::Length) {
+          g.j = r.id();
+          g.length = r.number();
+        } else {
+          g.point = r.vec();
+        }
+        if (g.kind == Goal::Plane || g.kind == Goal::Line) g.direction = r.vec();
+        g.weight = r.number();
+        m.add_goal(g);
+      } else if (op == "goal_weight") {
+        const std::size_t k = r.id();
+        m.set_goal_weight(k, r.number());
+      } else if (op == "remove_goal") m.remove_goal(r.id());
+      else if (op == "delete_particle") m.delete_particle(r.id());
       else if (op == "merge") m.merge(r.rest());
       else if (op == "explode") m.explode(r.id());
       else if (op == "explode_from") {

@@ -3,6 +3,7 @@
 // cell it belongs to, so a swap-remove can re-point that cell in O(1).
 #include <cstdint>
 #include <utility>
+#include <string>
 #include <vector>
 
 #include "model/membrane.hpp"
@@ -83,6 +84,25 @@ struct Cst {
 // A new element type joins the partition by calling place() whenever its
 // particles change (and erase() to remove it), and the solver loops over
 // awake_end() only; Model::set_passive then has to re-place it too.
+// A goal of the constraint-based solvers (thesis 3.3.5: a constraint that
+// attaches a fixed point or a geometric condition to particles), with a
+// weight [N/m]: the stiffness of its potential (eq. 3.59). Anchor: i to
+// `point`. Plane: i onto the plane through `point` with normal
+// `direction`. Line: i onto the line through `point` along `direction`
+// (either of any non-zero length, stored as given). Length: i and j at `length` apart. The explicit integrators
+// read it as a spring of stiffness `weight` to the same projection (into S,
+// eq. 3.4), so every integrator honours it. goals.cpp.
+struct Goal {
+  enum Kind : std::uint8_t { Anchor, Plane, Line, Length };
+  Kind kind = Anchor;
+  ParticleId i = kNone, j = kNone;  // j: Length only
+  Vec3 point = Vec3::Zero(), direction = Vec3::Zero();
+  double length = 0;
+  double weight = 0;
+};
+const char* goal_kind_name(Goal::Kind k);  // "anchor", "plane", "line", "length"
+bool parse_goal_kind(const std::string& name, Goal::Kind& out);
+
 template <class E>
 struct ElementBuffer {
   LoggedVector<E> items;

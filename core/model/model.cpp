@@ -30,6 +30,7 @@ Model::Model()
   hinges.attach(log);
   beam6s.attach(log);
   joints.items.attach(log);
+  goals.attach(log);
   csts.attach(log);
 }
 
@@ -50,6 +51,7 @@ ParticleId Model::new_particle(const Vec3& x) {
 }
 
 void Model::free_particle(ParticleId p) {
+  remove_goals_of(p);
   particles.release(p);
   if (!changes) return;
   // A particle born and gone within one record never existed for the journal.

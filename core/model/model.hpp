@@ -156,6 +156,14 @@ class Model {
   // a rotation (normalised here).
   void set_orientation(ParticleId p, const Quat& q);
   void set_moment(ParticleId p, const Vec3& m);  // external torque [N m]
+  // Goals (elements.hpp, goals.cpp): validated (live particles, finite
+  // vectors, a non-zero normal or direction (kept as given), a length >= 0,
+  // a weight > 0) before anything changes; returns its index. A goal goes
+  // with its particles (delete, merge, explode): remove_goal shifts the later
+  // indices down by one.
+  std::size_t add_goal(Goal g);
+  void remove_goal(std::size_t index);
+  void set_goal_weight(std::size_t index, double weight);
   Vec3 gravity = Vec3::Zero();
 
   // --- queries -----------------------------------------------------------
@@ -208,6 +216,7 @@ class Model {
   ElementBuffer<Hinge> hinges;
   ElementBuffer<Beam6> beam6s;
   ElementBuffer<RotationalJoint> joints;  // joints.cpp
+  LoggedVector<Goal> goals;               // goals.cpp
   ElementBuffer<Cst> csts;                // patches in CST mode
 
   // Per-dart columns: 0-embedding, owning block, element references, and the
@@ -237,6 +246,7 @@ class Model {
  private:
   ParticleId new_particle(const Vec3& x);
   void free_particle(ParticleId p);
+  void remove_goals_of(ParticleId p);  // goals.cpp
   BlockId new_block(BlockKind k, Section s, bool closed);  // by value: s may live in `blocks`
   void free_block(BlockId b);
   Dart new_dart(BlockId b, ParticleId p);

@@ -108,4 +108,29 @@ inline bool joint_targets(const RotationalJoint& jt, const ParticleId n[4], cons
   return true;
 }
 
+// Goal (elements.hpp): the pull on i towards its projection (j takes -fi
+// for a length) and the goal's direct stiffness, its weight (plus eq. 3.35's
+// geometric term for a stretched length goal).
+struct GoalForce {
+  Vec3 fi = Vec3::Zero();
+  double k = 0;
+};
+
+inline GoalForce goal_force(const Goal& g, const Vec3* x, double gf) {
+  const double w = g.weight;
+  const Vec3 r = x[g.i] - g.point;
+  switch (g.kind) {
+    case Goal::Anchor: return {-w * r, w};
+    case Goal::Plane: return {Vec3(-w * r.dot(g.direction) / g.direction.squaredNorm() * g.direction), w};
+    case Goal::Line: return {Vec3(-w * (r - r.dot(g.direction) / g.direction.squaredNorm() * g.direction)), w};
+    case Goal::Length: {
+      const Vec3 d = x[g.j] - x[g.i];
+      const double l = d.norm(), T = w * (l - g.length);
+      if (!(l > 0)) return {Vec3::Zero(), w};
+      return {Vec3((T / l) * d), w + (T > 0 ? gf * T / l : 0.0)};
+    }
+  }
+  return {};
+}
+
 }  // namespace tendril

@@ -57,6 +57,16 @@ void accumulate_projections(const Model& m, const Vec3* x, const Quat* q, double
     s.turn[b.i] += e.ta;
     s.turn[b.j] += e.tb;
   }
+  for (const Goal& g : m.goals) {  // the exact projections, weight w (twice it for a length)
+    if (!active[g.i] || (g.j != kNone && !active[g.j])) continue;
+    const GoalForce f = goal_force(g, x, gf);
+    if (g.kind != Goal::Length) {
+      add(s, g.i, f.k, f.fi);
+    } else {
+      add(s, g.i, 2 * f.k, f.fi);
+      add(s, g.j, 2 * f.k, -f.fi);
+    }
+  }
   for (const RotationalJoint& jt : m.joints.items) {
     ParticleId nb[4];
     Vec3 target[4];

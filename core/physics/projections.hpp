@@ -23,7 +23,9 @@
 //   rotational joints  each neighbour to its target (thesis 6.5.2) with twice
 //                    the joint's stiffness, the shared particle with 8 times;
 //   CST membranes    (Solver::local_step) each corner by its force over twice
-//                    its eq. 3.40 stiffness.
+//                    its eq. 3.40 stiffness;
+//   goals            anchors, planes and lines project their particle exactly
+//                    (weight: the goal's), a length goal is a bar.
 // Sums are kept relative to x: pull = sum K_k (p_k - x), so eq. 3.63 reads
 // x + pull / weight and carries no round-off from large coordinates.
 #include "model/model.hpp"

@@ -71,6 +71,10 @@ void ProjectiveSystem::factor(const Key& key, const Model& m, const Vec3* x, con
       const double w = std::max(b.EA / L, 12 * std::max(b.EIy, b.EIz) / (L * L * L));
       add_term<2>(t, row, {b.i, b.j}, {-1, 1}, w);
     }
+    for (const Goal& g : m.goals) {
+      if (g.kind == Goal::Length) add_term<2>(t, row, {g.i, g.j}, {-1, 1}, g.weight);
+      else add_term<1>(t, row, {g.i}, {1}, g.weight);
+    }
     for (const RotationalJoint& jt : m.joints.items) {
       ParticleId nb[4];
       if (!m.joint_neighbours(jt.particle, nb)) continue;

@@ -15,7 +15,9 @@
 //   6-DOF beams     w = max(EA/L, 12 EI/L^3) on the edge; rotation keeps the
 //                   per-particle average of eq. 3.63 (vie.cpp);
 //   joints          w = the joint stiffness on each neighbour's edge;
-//   CST membranes   twice each corner's eq. 3.40 stiffness on its diagonal.
+//   CST membranes   twice each corner's eq. 3.40 stiffness on its diagonal;
+//   goals           the weight on the particle's diagonal (anchor, plane,
+//                   line) or on the edge (length).
 // A fixed point is an equilibrium whatever the weights: they only decide how
 // fast the iterations get there.
 #include <Eigen/SparseCholesky>

@@ -159,7 +159,8 @@ class Solver {
   // forces.cpp: forces F and stiffnesses S at positions x; torques T and
   // rotational stiffnesses K (rotating particles only) at frames q.
   void accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S, Vec3* T, double* K) const;
-  void accumulate_joint_forces(const Vec3* x, Vec3* F, double* S) const;  // joints.cpp
+  void accumulate_joint_forces(const Vec3* x, Vec3* F, double* S) const;
+  void accumulate_goal_forces(const Vec3* x, Vec3* F, double* S) const;  // goal_forces.cpp  // joints.cpp
   void accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const;    // cst_forces.cpp
   void size_scratch();
   void prepare_masses();  // mass_, inertia_ and residual_; throws before anything moves

@@ -1,0 +1,71 @@
+// Goals of the constraint-based solvers: anchors, planes, lines, lengths.
+#include <cmath>
+#include <utility>
+
+#include "model/model.hpp"
+
+namespace tendril {
+
+const char* goal_kind_name(Goal::Kind k) {
+  switch (k) {
+    case Goal::Anchor: return "anchor";
+    case Goal::Plane: return "plane";
+    case Goal::Line: return "line";
+    case Goal::Length: return "length";
+  }
+  return "?";
+}
+
+bool parse_goal_kind(const std::string& name, Goal::Kind& out) {
+  for (Goal::Kind k : {Goal::Anchor, Goal::Plane, Goal::Line, Goal::Length})
+    if (name == goal_kind_name(k)) {
+      out = k;
+      return true;
+    }
+  return false;
+}
+
+std::size_t Model::add_goal(Goal g) {
+  const std::string fn = std::string("goal (") + goal_kind_name(g.kind) + ")";
+  require_particle(g.i, fn.c_str());
+  if (g.kind == Goal::Length) {
+    require_particle(g.j, fn.c_str());
+    if (g.i == g.j) throw ModelError(fn + ": the two particles must differ");
+    if (!(g.length >= 0) || !std::isfinite(g.length)) throw ModelError(fn + ": the length must be a finite number >= 0");
+  } else {
+    g.j = kNone;
+    if (!g.point.allFinite()) throw ModelError(fn + ": the point is not finite");
+  }
+  if (g.kind == Goal::Plane || g.kind == Goal::Line) {
+    const double n = g.direction.norm();
+    if (!(n > 0) || !std::isfinite(n))
+      throw ModelError(fn + ": the " + (g.kind == Goal::Plane ? "normal" : "direction") + " must be a non-zero vector");
+  }
+  if (!(g.weight > 0) || !std::isfinite(g.weight)) throw ModelError(fn + ": the weight must be > 0 [N/m]");
+  ++revision;
+  goals.push_back(g);
+  return goals.size() - 1;
+}
+
+void Model::remove_goal(std::size_t index) {
+  if (index >= goals.size()) throw ModelError("remove_goal: no goal " + std::to_string(index));
+  ++revision;
+  for (std::size_t k = index; k + 1 < goals.size(); ++k) goals[k] = std::as_const(goals)[k + 1];
+  goals.pop_back();
+}
+
+void Model::set_goal_weight(std::size_t index, double weight) {
+  if (index >= goals.size()) throw ModelError("goal_weight: no goal " + std::to_string(index));
+  if (!(weight > 0) || !std::isfinite(weight)) throw ModelError("goal_weight: the weight must be > 0 [N/m]");
+  ++revision;
+  goals[index].weight = weight;
+}
+
+void Model::remove_goals_of(ParticleId p) {
+  for (std::size_t k = goals.size(); k-- > 0;) {
+    const Goal& g = std::as_const(goals)[k];
+    if (g.i == p || g.j == p) remove_goal(k);
+  }
+}
+
+}  // namespace tendril
