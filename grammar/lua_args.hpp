@@ -50,4 +50,11 @@ int guarded(lua_State* L) {
   return lua_error(L);
 }
 
+// Sets field `name` of the table on top of the stack to the guarded F.
+template <lua_CFunction F>
+void set_fn(lua_State* L, const char* name) {
+  lua_pushcfunction(L, guarded<F>);
+  lua_setfield(L, -2, name);
+}
+
 }  // namespace tendril::lua

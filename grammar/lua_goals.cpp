@@ -104,12 +104,6 @@ int l_remove_goal(lua_State* L) {
   return 0;
 }
 
-template <lua_CFunction F>
-void set_fn(lua_State* L, const char* name) {
-  lua_pushcfunction(L, guarded<F>);
-  lua_setfield(L, -2, name);
-}
-
 }  // namespace
 
 void add_goal_methods(lua_State* L) {

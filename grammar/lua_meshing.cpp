@@ -302,12 +302,6 @@ int l_triangulation(lua_State* L) {
   return 1;
 }
 
-template <lua_CFunction F>
-void set_fn(lua_State* L, const char* name) {
-  lua_pushcfunction(L, guarded<F>);
-  lua_setfield(L, -2, name);
-}
-
 }  // namespace
 
 void add_meshing_methods(lua_State* L) {

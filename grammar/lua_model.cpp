@@ -932,12 +932,6 @@ int l_block_tostring(lua_State* L) {
   return 1;
 }
 
-template <lua_CFunction F>
-void set_fn(lua_State* L, const char* name) {
-  lua_pushcfunction(L, guarded<F>);
-  lua_setfield(L, -2, name);
-}
-
 void register_model_meta(lua_State* L) {
   luaL_newmetatable(L, kModelMeta);
   lua_pushcfunction(L, l_gc);

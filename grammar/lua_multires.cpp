@@ -144,12 +144,6 @@ int l_coarsen(lua_State* L) {
   return 0;
 }
 
-template <lua_CFunction F>
-void set_fn(lua_State* L, const char* name) {
-  lua_pushcfunction(L, guarded<F>);
-  lua_setfield(L, -2, name);
-}
-
 }  // namespace
 
 void add_multires_methods(lua_State* L) {

@@ -280,12 +280,6 @@ int l_save_journal(lua_State* L) {
   return 0;
 }
 
-template <lua_CFunction F>
-void set_fn(lua_State* L, const char* name) {
-  lua_pushcfunction(L, guarded<F>);
-  lua_setfield(L, -2, name);
-}
-
 }  // namespace
 
 Scene::~Scene() {
