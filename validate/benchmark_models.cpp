@@ -13,7 +13,7 @@ constexpr std::uint8_t kFullLock = kLockTranslation | kLockRotation;
 
 }  // namespace
 
-Elastica::Elastica(double theta0_deg, int n) {
+Elastica::Elastica(double theta0_deg, int n, int dofs) {
   const double L = 10, EI = 1e5, EA = 1e8;
   const double k = std::sin(theta0_deg * kPi / 360);
   const double K = std::comp_ellint_1(k), E = std::comp_ellint_2(k);
@@ -29,6 +29,7 @@ Elastica::Elastica(double theta0_deg, int n) {
   for (ParticleId p : ps) m.set_lock(p, kLockZ);
   m.set_lock(ps.front(), kLockTranslation);
   m.set_lock(ps.back(), kLockTranslation);
+  if (dofs == 6) m.set_beam_formulation(beam, 6);
 }
 
 double Elastica::deflection_error() const {
@@ -36,6 +37,33 @@ double Elastica::deflection_error() const {
 }
 
 double Elastica::load_error(const Solver& s) const { return std::abs(-s.reaction(ps.back()).x() / exact_load - 1); }
+
+HangingChain::HangingChain(int n) {
+  m.gravity = Vec3(0, 0, -g);
+  for (int i = 0; i <= n; ++i) {
+    const double s = double(i) / n;
+    ps.push_back(m.add_particle(Vec3(span * s, 0, -2 * s * (1 - s))));
+  }
+  for (int i = 0; i < n; ++i) m.add_cable(ps[i], ps[i + 1], Section{EA, 0, 0, rho}, length / n);
+  m.set_lock(ps.front(), kLockTranslation);
+  m.set_lock(ps.back(), kLockTranslation);
+}
+
+double HangingChain::sag() const { return -m.particles.position[ps[ps.size() / 2]].z(); }
+
+double HangingChain::exact_sag() {
+  const double W = rho * g * length;
+  auto span_of = [&](double H) { return 2 * H * length / W * std::asinh(W / (2 * H)) + H * length / EA; };
+  double lo = 1e-6 * W, hi = 1e6 * W;  // the span grows with H
+  for (int i = 0; i < 300; ++i) {
+    const double H = std::sqrt(lo * hi);
+    (span_of(H) < span ? lo : hi) = H;
+  }
+  const double H = std::sqrt(lo * hi);
+  return H * length / W * (std::sqrt(1 + std::pow(W / (2 * H), 2)) - 1) + W * length / (8 * EA);
+}
+
+double HangingChain::sag_error() const { return std::abs(sag() / exact_sag() - 1); }
 
 Cantilever::Cantilever(int n, double L, const Section& s) {
   for (int i = 0; i <= n; ++i) ps.push_back(m.add_particle(Vec3(L * i / n, 0, 0)));

@@ -1,8 +1,9 @@
 #pragma once
 // The published benchmark models, built once for both `tendril validate`
 // (validate/cases/) and the doctest suites, so a case and its test cannot
-// drift apart: the pin-ended elastica, the straight cantilever, Bathe &
-// Bolourchi's 45-degree bend and the prestressed ring of thesis 5.4.1.2.
+// drift apart: the pin-ended elastica, the hanging chain, the straight
+// cantilever, Bathe & Bolourchi's 45-degree bend and the prestressed ring of
+// thesis 5.4.1.2.
 #include <vector>
 
 #include "model/model.hpp"
@@ -23,10 +24,27 @@ struct Elastica {
   std::vector<ParticleId> ps;
   BlockId beam;
   double exact_deflection = 0, exact_load = 0;
-  Elastica(double theta0_deg, int n);
+  explicit Elastica(double theta0_deg = 80, int n = 64, int dofs = 3);
   // |measured / exact - 1|. The strut buckles either way; both are exact.
   double deflection_error() const;
   double load_error(const Solver& s) const;
+};
+
+// A chain of n cables hanging under its own weight: 10 m span, 12 m
+// unstretched, 2 kg/m, EA = 100 kN, ends pinned, started as a shallow
+// parabola. Against the elastic catenary (Irvine 1981): for span s,
+// unstretched length L0, weight W and horizontal tension H,
+//   s   = (2 H L0 / W) asinh(W / 2H) + H L0 / EA
+//   sag = (H L0 / W) (sqrt(1 + (W / 2H)^2) - 1) + W L0 / (8 EA),
+// H from the first by bisection, then the mid-span sag from the second.
+struct HangingChain {
+  static constexpr double span = 10, length = 12, rho = 2.0, EA = 1e5, g = 9.81;
+  Model m;
+  std::vector<ParticleId> ps;
+  explicit HangingChain(int n = 80);  // n even: a particle at mid-span
+  double sag() const;                 // of the mid-span particle [m]
+  static double exact_sag();
+  double sag_error() const;           // |sag / exact - 1|
 };
 
 // A straight cantilever along x from the origin, n segments, 6 DOF, root

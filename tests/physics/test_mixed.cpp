@@ -5,11 +5,11 @@
 
 #include <string>
 
-#include "reference_models.hpp"
+#include "benchmark_models.hpp"
 
 using namespace tendril;
-using reference::Chain;
-using reference::Strut;
+using Chain = validate::HangingChain;
+using Strut = validate::Elastica;
 
 TEST_CASE("mixed: the elastica and the catenary within their tolerances, finishing in the VIE phase") {
   for (double vie_dt : {0.0, 4.0}) {

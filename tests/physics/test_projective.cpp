@@ -6,11 +6,11 @@
 
 #include <string>
 
-#include "reference_models.hpp"
+#include "benchmark_models.hpp"
 
 using namespace tendril;
-using reference::Chain;
-using reference::Strut;
+using Chain = validate::HangingChain;
+using Strut = validate::Elastica;
 
 namespace {
 RunResult relax(Model& m, Solver& s, Integrator integrator, double tolerance) {

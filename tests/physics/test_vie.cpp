@@ -6,11 +6,11 @@
 #include <doctest/doctest.h>
 
 #include "physics/projections.hpp"
-#include "reference_models.hpp"
+#include "benchmark_models.hpp"
 
 using namespace tendril;
-using reference::Chain;
-using reference::Strut;
+using Chain = validate::HangingChain;
+using Strut = validate::Elastica;
 
 TEST_CASE("vie: the elastica within 1% of the exact solution, the same discrete answer as Leapfrog") {
   Strut leap;
