@@ -74,24 +74,15 @@ struct Cst {
   std::uint8_t interior;
 };
 
-// A flat element buffer, partitioned for multi-resolution (thesis 5.5.2.3):
-// items[0, awake) touch no passive particle and are all the solver
-// evaluates; items[awake, size) are dormant and cost nothing in a step. An
-// element changes side by one swap with the border, so the partition is
-// kept by O(1) work per element a change touches, and every swap goes
-// through the undo log. `repoint(k)` (given by the model) re-points the cell
-// of the element that now sits at index k (its dart column).
-// A new element type joins the partition by calling place() whenever its
-// particles change (and erase() to remove it), and the solver loops over
-// awake_end() only; Model::set_passive then has to re-place it too.
 // A goal of the constraint-based solvers (thesis 3.3.5: a constraint that
 // attaches a fixed point or a geometric condition to particles), with a
 // weight [N/m]: the stiffness of its potential (eq. 3.59). Anchor: i to
 // `point`. Plane: i onto the plane through `point` with normal
 // `direction`. Line: i onto the line through `point` along `direction`
-// (either of any non-zero length, stored as given). Length: i and j at `length` apart. The explicit integrators
-// read it as a spring of stiffness `weight` to the same projection (into S,
-// eq. 3.4), so every integrator honours it. goals.cpp.
+// (either of any non-zero length, stored as given). Length: i and j at
+// `length` apart. The explicit integrators read it as a spring of stiffness
+// `weight` to the same projection (into S, eq. 3.4), so every integrator
+// honours it. goals.cpp.
 struct Goal {
   enum Kind : std::uint8_t { Anchor, Plane, Line, Length };
   Kind kind = Anchor;
@@ -103,6 +94,16 @@ struct Goal {
 const char* goal_kind_name(Goal::Kind k);  // "anchor", "plane", "line", "length"
 bool parse_goal_kind(const std::string& name, Goal::Kind& out);
 
+// A flat element buffer, partitioned for multi-resolution (thesis 5.5.2.3):
+// items[0, awake) touch no passive particle and are all the solver
+// evaluates; items[awake, size) are dormant and cost nothing in a step. An
+// element changes side by one swap with the border, so the partition is
+// kept by O(1) work per element a change touches, and every swap goes
+// through the undo log. `repoint(k)` (given by the model) re-points the cell
+// of the element that now sits at index k (its dart column).
+// A new element type joins the partition by calling place() whenever its
+// particles change (and erase() to remove it), and the solver loops over
+// awake_end() only; Model::set_passive then has to re-place it too.
 template <class E>
 struct ElementBuffer {
   LoggedVector<E> items;

@@ -39,7 +39,8 @@ const char* damping_name(Damping d);
 // mixed.cpp) take vie_iterations local-global iterations per step:
 // VariationalImplicitEuler averages the projections per particle (eq. 3.63),
 // ProjectiveDynamics solves the prefactored global system instead, Mixed runs
-// Leapfrog far from equilibrium and VIE near it (5.4.2.2).
+// Leapfrog far from equilibrium and VIE (or projective dynamics, see
+// mixed_implicit) near it (5.4.2.2).
 enum class Integrator { Leapfrog, SymplecticEuler, VelocityVerlet, Midpoint, RK4, VariationalImplicitEuler,
                         ProjectiveDynamics, Mixed };
 // The explicit integrators (eq. 3.9-3.25).
@@ -159,8 +160,8 @@ class Solver {
   // forces.cpp: forces F and stiffnesses S at positions x; torques T and
   // rotational stiffnesses K (rotating particles only) at frames q.
   void accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S, Vec3* T, double* K) const;
-  void accumulate_joint_forces(const Vec3* x, Vec3* F, double* S) const;
-  void accumulate_goal_forces(const Vec3* x, Vec3* F, double* S) const;  // goal_forces.cpp  // joints.cpp
+  void accumulate_joint_forces(const Vec3* x, Vec3* F, double* S) const;  // joints.cpp
+  void accumulate_goal_forces(const Vec3* x, Vec3* F, double* S) const;   // goal_forces.cpp
   void accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const;    // cst_forces.cpp
   void size_scratch();
   void prepare_masses();  // mass_, inertia_ and residual_; throws before anything moves
@@ -223,7 +224,7 @@ class Solver {
   std::vector<Vec3> x0_, r0_;        // implicit: x0 of eq. 3.57, and its rotation vector from the frame
   std::shared_ptr<ProjectiveSystem> projective_;  // projective.hpp, built on first use
   std::vector<double> projective_mass_;             // M frozen with its factorisation
-  bool mixed_implicit_ = false;      // Mixed: in its VIE phase
+  bool mixed_implicit_ = false;      // Mixed: in its implicit phase
   double mixed_peak_ = 0, mixed_entry_ = 0;
 };
 
