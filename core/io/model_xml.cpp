@@ -23,6 +23,9 @@ namespace tendril {
 
 namespace {
 
+// An undirected edge by its sorted particle pair.
+std::pair<unsigned, unsigned> edge_key(unsigned x, unsigned y) { return {std::min(x, y), std::max(x, y)}; }
+
 constexpr int kVersion = 1;
 
 // 17 significant digits: every double reads back to the same bits.
@@ -159,7 +162,7 @@ QuadList quad_list(const Model& m, BlockId b, const std::vector<unsigned>& dense
   std::map<std::pair<unsigned, unsigned>, double> rest;
   for (Dart d : darts) {
     const unsigned a = dense[m.dart_particle[d]], c = dense[m.dart_particle[m.map.alpha(0, d)]];
-    rest.emplace(std::make_pair(std::min(a, c), std::max(a, c)), m.rest_length[d]);
+    rest.emplace(edge_key(a, c), m.rest_length[d]);
     if (done.count(d)) continue;
     for (Dart x : m.map.orbit(kFaceOrbit, d)) done.insert(x);
     std::array<unsigned, 4> q{};
@@ -566,6 +569,9 @@ class Reader {
   BlockRecord read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a, BlockRecord& b) const;
   void check_references(const Document& d) const;
   void read_triangle(const tinyxml2::XMLElement* c, Attributes& ca, BlockRecord& b) const;
+  // The children both patch forms share: <edge a b rest> and <triangle>.
+  void read_edge_or_triangle(const tinyxml2::XMLElement* c, Attributes& ca, BlockRecord& b,
+                             std::vector<const tinyxml2::XMLElement*>& edge_elements) const;
   void check_triangles(const tinyxml2::XMLElement* e, const BlockRecord& b) const;
   void match_edges(const tinyxml2::XMLElement* e, const BlockRecord& b,
                    const std::vector<const tinyxml2::XMLElement*>& edge_elements,
@@ -852,15 +858,8 @@ BlockRecord Reader::read_patch(const tinyxml2::XMLElement* e) const {
     if (std::strcmp(c->Name(), "node") == 0) {
       b.nodes.push_back(ca.index("p"));
       node_elements.push_back(c);
-    } else if (std::strcmp(c->Name(), "edge") == 0) {
-      EdgeRecord r{ca.index("a"), ca.index("b"), ca.real("rest")};
-      if (!(r.rest > 0)) ca.bad("rest", "must be > 0");
-      b.edges.push_back(r);
-      edge_elements.push_back(c);
-    } else if (std::strcmp(c->Name(), "triangle") == 0) {
-      read_triangle(c, ca, b);
     } else {
-      fail(c, std::string("unknown element <") + c->Name() + "> inside <patch>");
+      read_edge_or_triangle(c, ca, b, edge_elements);
     }
     ca.done();
     no_children(c);
@@ -875,8 +874,7 @@ BlockRecord Reader::read_patch(const tinyxml2::XMLElement* e) const {
       fail(node_elements[k], "attribute 'p': particle " + std::to_string(b.nodes[k]) + " appears twice in the patch");
   // Every grid edge exactly once, either way round.
   std::map<std::pair<unsigned, unsigned>, int> expected;  // -> index of its <edge>, -1 until seen
-  auto key = [](unsigned x, unsigned y) { return std::make_pair(std::min(x, y), std::max(x, y)); };
-  for (const QuadGrid::Edge& g : QuadGrid::edges(b.rows, b.cols)) expected[key(b.nodes[g.a], b.nodes[g.b])] = -1;
+  for (const QuadGrid::Edge& g : QuadGrid::edges(b.rows, b.cols)) expected[edge_key(b.nodes[g.a], b.nodes[g.b])] = -1;
   match_edges(e, b, edge_elements, expected, "the grid");
   check_triangles(e, b);
   return b;
@@ -889,7 +887,6 @@ BlockRecord Reader::read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a
   a.done();
   std::vector<const tinyxml2::XMLElement*> edge_elements;
   std::map<std::pair<unsigned, unsigned>, int> expected;  // -> index of its <edge>, -1 until seen
-  auto key = [](unsigned x, unsigned y) { return std::make_pair(std::min(x, y), std::max(x, y)); };
   for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
     Attributes ca(*this, c);
     if (std::strcmp(c->Name(), "quad") == 0) {
@@ -898,18 +895,11 @@ BlockRecord Reader::read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a
       for (int k = 0; k < 4; ++k) {
         for (int j = k + 1; j < 4; ++j)
           if (q[k] == q[j]) ca.bad(kQuadNames[j], "repeats particle " + std::to_string(q[j]) + " in the quad");
-        expected.emplace(key(q[k], q[(k + 1) % 4]), -1);
+        expected.emplace(edge_key(q[k], q[(k + 1) % 4]), -1);
         b.nodes.push_back(q[k]);
       }
-    } else if (std::strcmp(c->Name(), "edge") == 0) {
-      EdgeRecord r{ca.index("a"), ca.index("b"), ca.real("rest")};
-      if (!(r.rest > 0)) ca.bad("rest", "must be > 0");
-      b.edges.push_back(r);
-      edge_elements.push_back(c);
-    } else if (std::strcmp(c->Name(), "triangle") == 0) {
-      read_triangle(c, ca, b);
     } else {
-      fail(c, std::string("unknown element <") + c->Name() + "> inside <patch>");
+      read_edge_or_triangle(c, ca, b, edge_elements);
     }
     ca.done();
     no_children(c);
@@ -922,6 +912,20 @@ BlockRecord Reader::read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a
 
 // <triangle a b c [l1 h x]/>: a CST triangle, side a-b along the warp; in
 // analysis its reference shape (side a-b of length l1, c at (x, h)).
+void Reader::read_edge_or_triangle(const tinyxml2::XMLElement* c, Attributes& ca, BlockRecord& b,
+                                   std::vector<const tinyxml2::XMLElement*>& edge_elements) const {
+  if (std::strcmp(c->Name(), "edge") == 0) {
+    EdgeRecord r{ca.index("a"), ca.index("b"), ca.real("rest")};
+    if (!(r.rest > 0)) ca.bad("rest", "must be > 0");
+    b.edges.push_back(r);
+    edge_elements.push_back(c);
+  } else if (std::strcmp(c->Name(), "triangle") == 0) {
+    read_triangle(c, ca, b);
+  } else {
+    fail(c, std::string("unknown element <") + c->Name() + "> inside <patch>");
+  }
+}
+
 void Reader::read_triangle(const tinyxml2::XMLElement* c, Attributes& ca, BlockRecord& b) const {
   if (!b.membrane.cst()) fail(c, "a <triangle> needs the patch's attribute membrane=\"form\" or \"analysis\"");
   std::array<unsigned, 3> t{};
@@ -949,9 +953,8 @@ void Reader::check_triangles(const tinyxml2::XMLElement* e, const BlockRecord& b
 void Reader::match_edges(const tinyxml2::XMLElement* e, const BlockRecord& b,
                          const std::vector<const tinyxml2::XMLElement*>& edge_elements,
                          std::map<std::pair<unsigned, unsigned>, int>& expected, const char* where) const {
-  auto key = [](unsigned x, unsigned y) { return std::make_pair(std::min(x, y), std::max(x, y)); };
   for (std::size_t k = 0; k < b.edges.size(); ++k) {
-    auto it = expected.find(key(b.edges[k].a, b.edges[k].b));
+    auto it = expected.find(edge_key(b.edges[k].a, b.edges[k].b));
     if (it == expected.end())
       fail(edge_elements[k], "attributes 'a' and 'b': particles " + std::to_string(b.edges[k].a) + " and " +
                                  std::to_string(b.edges[k].b) + " are not neighbours in " + where);
