@@ -9,9 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/model_xml.hpp"
-#include "io/trace.hpp"
-#include "lua_host.hpp"
+#include "scene_files.hpp"
 
 using namespace tendril;
 
@@ -23,12 +21,7 @@ std::filesystem::path work_dir() {
   return dir;
 }
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::slurp;
 
 // Runs `code` as scene `name` writing into work_dir(); returns the error text.
 std::string run(const std::string& name, const std::string& code) {
@@ -108,17 +101,15 @@ m:save(tendril.out("paving_live.xml"))
 m:save_journal(tendril.out("paving_journal.txt"))
 )lua");
   REQUIRE(error == "");
-  Model model;
-  Solver solver(model);
-  std::ifstream journal(work_dir() / "paving_journal.txt");
-  replay_trace(journal, "paving_journal.txt", model, solver);
+  const test::Replayed replayed(work_dir() / "paving_journal.txt");
+  const Model& model = replayed.model;
   CHECK(model.check() == "");
   const std::string live = slurp(work_dir() / "paving_live.xml");
   CHECK(live.find("<quad ") != std::string::npos);  // the paved patch is not a grid
   const std::string lines = slurp(work_dir() / "paving_journal.txt");
   CHECK(lines.find("\nposition ") != std::string::npos);  // rule 25 moved the sagged interior
   CHECK(lines.find("\npatch ") != std::string::npos);
-  CHECK(model_xml_string(model, solver.settings) == live);
+  CHECK(replayed.xml() == live);
   CHECK(lines.find("\ndelete ") != std::string::npos);  // patch_refine deleted the old patch
   CHECK(lines.find("\nremove_from_patch ") != std::string::npos);  // rule 22 cut both grids
   CHECK(model.block_count(BlockKind::Patch) == 7);
@@ -293,15 +284,13 @@ m:save(tendril.out("patch_ops_live.xml"))
 m:save_journal(tendril.out("patch_ops_journal.txt"))
 )lua");
   REQUIRE(error == "");
-  Model model;
-  Solver solver(model);
-  std::ifstream journal(work_dir() / "patch_ops_journal.txt");
-  replay_trace(journal, "patch_ops_journal.txt", model, solver);
+  const test::Replayed replayed(work_dir() / "patch_ops_journal.txt");
+  const Model& model = replayed.model;
   CHECK(model.check() == "");
   const std::string lines = slurp(work_dir() / "patch_ops_journal.txt");
   CHECK(lines.find("\nmerge_patches ") != std::string::npos);
   CHECK(lines.find("\nremove_from_patch ") != std::string::npos);
   CHECK(lines.find("\ndelete ") != std::string::npos);
-  CHECK(model_xml_string(model, solver.settings) == slurp(work_dir() / "patch_ops_live.xml"));
+  CHECK(replayed.xml() == slurp(work_dir() / "patch_ops_live.xml"));
   CHECK(model.block_count(BlockKind::Patch) == 1);
 }

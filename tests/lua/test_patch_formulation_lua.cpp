@@ -4,33 +4,15 @@
 // the model unchanged.
 #include <doctest/doctest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
-#include "io/model_xml.hpp"
-#include "io/trace.hpp"
-#include "lua_host.hpp"
+#include "scene_files.hpp"
 
 using namespace tendril;
+using test::Replayed;
+using test::slurp;
 
 namespace {
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-int run(const std::filesystem::path& dir, const std::string& scene, std::string* error) {
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "scene.lua") << scene;
-  SceneOptions options;
-  options.progress = false;
-  options.out_dir = dir.string();
-  return run_scene((dir / "scene.lua").string(), options, error);
-}
 
 const char* kTube = R"(
 local m = tendril.model()
@@ -68,16 +50,13 @@ m:save(tendril.out("live.xml"))
 m:save_journal(tendril.out("journal.txt"))
 )";
   std::string error;
-  REQUIRE(run(dir, scene, &error) == 0);
+  REQUIRE(test::run_scene_in(dir, scene, &error) == 0);
   REQUIRE(error == "");
   // Replay.
-  Model model;
-  Solver solver(model);
-  std::ifstream journal(dir / "journal.txt");
-  replay_trace(journal, "journal.txt", model, solver);
-  CHECK(model.check() == "");
-  CHECK(model_xml_string(model, solver.settings) == slurp(dir / "live.xml"));
-  CHECK(model.csts.size() == 2u * 12 * 4);
+  const Replayed replayed(dir / "journal.txt");
+  CHECK(replayed.model.check() == "");
+  CHECK(replayed.xml() == slurp(dir / "live.xml"));
+  CHECK(replayed.model.csts.size() == 2u * 12 * 4);
   // The database: each saved state loads into a valid model that saves the same bytes.
   for (const char* name : {"form.xml", "analysis.xml", "live.xml"}) {
     CAPTURE(name);
@@ -124,7 +103,7 @@ assert(not ok and err:find("back to bars first", 1, true), err)
 print("refused as expected")
 )";
   std::string error;
-  CHECK(run(dir, scene, &error) == 0);
+  CHECK(test::run_scene_in(dir, scene, &error) == 0);
   CHECK(error == "");
   CHECK(slurp(dir / "before.xml") == slurp(dir / "after.xml"));
 }

@@ -3,29 +3,18 @@
 // its journal, the same model bit for bit.
 #include <doctest/doctest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
-#include "io/model_xml.hpp"
-#include "io/trace.hpp"
-#include "lua_host.hpp"
+#include "scene_files.hpp"
 
 using namespace tendril;
-
-namespace {
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-}  // namespace
+using test::Replayed;
+using test::run_scene_in;
+using test::slurp;
 
 TEST_CASE("replaying a journal rebuilds the final model bit for bit") {
   const auto dir = std::filesystem::temp_directory_path() / "tendril-replay";
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "scene.lua") << R"(
+  const std::string scene = R"(
 local m = tendril.model{ damping = "kinetic" }
 m:gravity{ 0, 0, -9.81 }
 local beam = m:beam{ points = {{0,0,0}, {1,0,0}, {2,0,0}, {3,0,0}}, EA = 1e5, EI = 1, line_mass = 1 }
@@ -56,21 +45,16 @@ m:step(25)
 m:save(tendril.out("live.xml"))
 m:save_journal(tendril.out("journal.txt"))
 )";
-  SceneOptions options;
-  options.progress = false;
-  options.out_dir = dir.string();
   std::string error;
-  REQUIRE(run_scene((dir / "scene.lua").string(), options, &error) == 0);
+  REQUIRE(run_scene_in(dir, scene, &error) == 0);
   REQUIRE(error == "");
 
-  Model model;
-  Solver solver(model);
-  std::ifstream journal(dir / "journal.txt");
-  replay_trace(journal, "journal.txt", model, solver);
+  Replayed replayed(dir / "journal.txt");
+  const Model& model = replayed.model;
   CHECK(model.check() == "");
   const std::string live = slurp(dir / "live.xml");
   CHECK(live.size() > 2000);
-  CHECK(model_xml_string(model, solver.settings) == live);
+  CHECK(replayed.xml() == live);
   CHECK(model.particle_count() == 11);  // 4 + 6 splits + 1 from the explode
 }
 
@@ -88,8 +72,7 @@ TEST_CASE("a malformed journal names its line") {
 
 TEST_CASE("a journal with 6-DOF beams, frames, moments and formulation switches replays bit for bit") {
   const auto dir = std::filesystem::temp_directory_path() / "tendril-replay6";
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "scene.lua") << R"(
+  const std::string scene = R"(
 local m = tendril.model()
 local ps = {}
 for i = 0, 16 do ps[#ps + 1] = m:particle{ i * 0.25, 0, 0 } end
@@ -104,24 +87,18 @@ m:step(50)
 m:save(tendril.out("live.xml"))
 m:save_journal(tendril.out("journal.txt"))
 )";
-  SceneOptions options;
-  options.progress = false;
-  options.out_dir = dir.string();
   std::string error;
-  REQUIRE(run_scene((dir / "scene.lua").string(), options, &error) == 0);
-  Model model;
-  Solver solver(model);
-  std::ifstream journal(dir / "journal.txt");
-  replay_trace(journal, "journal.txt", model, solver);
+  REQUIRE(run_scene_in(dir, scene, &error) == 0);
+  Replayed replayed(dir / "journal.txt");
+  const Model& model = replayed.model;
   CHECK(model.check() == "");
-  CHECK(model_xml_string(model, solver.settings) == slurp(dir / "live.xml"));
+  CHECK(replayed.xml() == slurp(dir / "live.xml"));
   CHECK(model.beam6s.size() == 16);
 }
 
 TEST_CASE("a journal with multi-resolution switches (thesis 5.5.2.3) replays bit for bit") {
   const auto dir = std::filesystem::temp_directory_path() / "tendril-replay-multires";
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "scene.lua") << R"(
+  const std::string scene = R"(
 local m = tendril.model()
 m:gravity{ 0, 0, -9.81 }
 local grid = {}
@@ -145,18 +122,13 @@ m:step(10)
 m:save(tendril.out("live.xml"))
 m:save_journal(tendril.out("journal.txt"))
 )";
-  SceneOptions options;
-  options.progress = false;
-  options.out_dir = dir.string();
   std::string error;
-  REQUIRE(run_scene((dir / "scene.lua").string(), options, &error) == 0);
+  REQUIRE(run_scene_in(dir, scene, &error) == 0);
   REQUIRE(error == "");
-  Model model;
-  Solver solver(model);
-  std::ifstream journal(dir / "journal.txt");
-  replay_trace(journal, "journal.txt", model, solver);
+  Replayed replayed(dir / "journal.txt");
+  const Model& model = replayed.model;
   CHECK(model.check() == "");
-  CHECK(model_xml_string(model, solver.settings) == slurp(dir / "live.xml"));
+  CHECK(replayed.xml() == slurp(dir / "live.xml"));
   CHECK(model.particle_count() == 100);  // 10 x 10 after a factor-3 split of 3 x 3 quads
   CHECK(model.block_count() == 1);
 }

@@ -2,20 +2,15 @@
 // journal bit for bit.
 #include <doctest/doctest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
-#include "io/model_xml.hpp"
-#include "io/trace.hpp"
-#include "lua_host.hpp"
+#include "scene_files.hpp"
 
 using namespace tendril;
 
 TEST_CASE("split, rest_length and a sliding joint replay from the journal") {
   const auto dir = std::filesystem::temp_directory_path() / "tendril-split-replay";
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "scene.lua") << R"(
+  const std::string scene = R"(
 local m = tendril.model()
 local pts = {}
 for i = 0, 8 do pts[#pts + 1] = { 0.5 * i, 0, 0 } end
@@ -44,8 +39,6 @@ m:save(tendril.out("live.xml"))
 m:save_journal(tendril.out("journal.txt"))
 )";
   SceneOptions options;
-  options.progress = false;
-  options.out_dir = dir.string();
   for (const char* name : {"vector.lua", "joints.lua"}) {  // the agents the scene needs
     std::ifstream src(std::filesystem::path(TENDRIL_SOURCE_DIR) / "agents" / name);
     std::stringstream text;
@@ -53,19 +46,13 @@ m:save_journal(tendril.out("journal.txt"))
     options.preload.push_back({std::string("agents/") + name, text.str()});
   }
   std::string error;
-  const int rc = run_scene((dir / "scene.lua").string(), options, &error);
+  const int rc = test::run_scene_in(dir, scene, &error, options);
   INFO(error);
   REQUIRE(rc == 0);
   INFO(error);
   REQUIRE(error == "");
-  Model model;
-  Solver solver(model);
-  std::ifstream journal(dir / "journal.txt");
-  replay_trace(journal, "journal.txt", model, solver);
-  CHECK(model.check() == "");
-  std::ifstream in(dir / "live.xml");
-  std::stringstream live;
-  live << in.rdbuf();
-  CHECK(model_xml_string(model, solver.settings) == live.str());
-  CHECK(model.block_count(BlockKind::Beam) == 3);
+  const test::Replayed replayed(dir / "journal.txt");
+  CHECK(replayed.model.check() == "");
+  CHECK(replayed.xml() == test::slurp(dir / "live.xml"));
+  CHECK(replayed.model.block_count(BlockKind::Beam) == 3);
 }
