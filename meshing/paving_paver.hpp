@@ -149,6 +149,8 @@ class Paver {
   // paving_smoothing.cpp
   void smooth(const std::vector<bool>& movable, const Fronts& fronts, int iterations);
   void optimise(const std::vector<bool>& movable, int iterations);
+  // The smallest scaled Jacobian of the given quads (1 when there are none).
+  double worst_jacobian(const std::vector<std::size_t>& quads);
 
   Mesh2 finish();
 };

@@ -5,6 +5,12 @@
 
 namespace tendril::meshing::detail {
 
+double Paver::worst_jacobian(const std::vector<std::size_t>& quads) {
+  double j = 1;
+  for (std::size_t q : quads) j = std::min(j, jacobian(corners(quads_[q])));
+  return j;
+}
+
 // Smoothing of the movable nodes (roots only). Enclosed nodes move to the
 // mean of their neighbours (Laplacian). A node on the front has quads on one
 // side only, so Laplacian would pull it back into the finished rows: it moves
@@ -35,11 +41,7 @@ void Paver::smooth(const std::vector<bool>& movable, const Fronts& fronts, int i
       front_prev[v] = find(front[(k + front.size() - 1) % front.size()]);
       front_next[v] = find(front[(k + 1) % front.size()]);
     }
-  auto worst = [&](Index v) {
-    double j = 1;
-    for (std::size_t q : incident[v]) j = std::min(j, jacobian(corners(quads_[q])));
-    return j;
-  };
+  auto worst = [&](Index v) { return worst_jacobian(incident[v]); };
   for (int it = 0; it < iterations; ++it)
     for (Index v = 0; v < np; ++v) {
       if (v >= movable.size() || !movable[v] || neighbours[v].empty()) continue;
@@ -57,11 +59,10 @@ void Paver::smooth(const std::vector<bool>& movable, const Fronts& fronts, int i
           target += pts_[find(c[(k + 1) % 4])] + pts_[find(c[(k + 3) % 4])] - pts_[find(c[(k + 2) % 4])];
         }
         target /= double(incident[v].size());
-        if (on_front[v]) {  // and slide along the front towards even spacing
-          const Vec2 a = pts_[front_prev[v]], b = pts_[front_next[v]];
-          const Vec2 t = (b - a).normalized();
-          target += t * t.dot((a + b) / 2 - target);
-        }
+        // And slide along the front towards even spacing.
+        const Vec2 a = pts_[front_prev[v]], b = pts_[front_next[v]];
+        const Vec2 t = (b - a).normalized();
+        target += t * t.dot((a + b) / 2 - target);
       }
       const Vec2 old = pts_[v];
       const double before = worst(v);
@@ -83,11 +84,7 @@ void Paver::optimise(const std::vector<bool>& movable, int iterations) {
       incident[quads_[q][k]].push_back(q);
       reach[quads_[q][k]] += (pts_[quads_[q][(k + 1) % 4]] - pts_[quads_[q][k]]).norm();
     }
-  auto worst = [&](Index v) {
-    double j = 1;
-    for (std::size_t q : incident[v]) j = std::min(j, jacobian(corners(quads_[q])));
-    return j;
-  };
+  auto worst = [&](Index v) { return worst_jacobian(incident[v]); };
   for (int it = 0; it < iterations; ++it)
     for (Index v = 0; v < np; ++v) {
       if (!movable[v] || incident[v].empty()) continue;
