@@ -2,9 +2,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <string>
 
+#include "io/atomic_file.hpp"
+#include "io/input_file.hpp"
 #include "io/model_xml.hpp"
 #include "io/obj.hpp"
 #include "io/trace.hpp"
@@ -55,12 +57,8 @@ int replay(int argc, char** argv) {
     std::fprintf(stderr, "tendril: replay needs a journal file\n\n%s", kUsage);
     return 2;
   }
-  std::ifstream in(journal);
-  if (!in) {
-    std::fprintf(stderr, "tendril: cannot read %s\n", journal.c_str());
-    return 1;
-  }
   try {
+    std::istringstream in(tendril::read_input_file(journal));
     tendril::Model model;
     tendril::Solver solver(model);
     tendril::replay_trace(in, journal, model, solver);
@@ -86,6 +84,7 @@ int replay(int argc, char** argv) {
 int run_validate(int argc, char** argv);  // validate_command.cpp
 
 int main(int argc, char** argv) {
+  tendril::clean_up_outputs_on_signals();
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;

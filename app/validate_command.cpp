@@ -2,7 +2,11 @@
 // every validation case (validate/cases/) with each integrator, formulation
 // and resolution, prints the table, and fails when a case under its default
 // settings misses its tolerance.
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -68,7 +72,23 @@ int run_validate(int argc, char** argv) {
     std::fprintf(stderr, "tendril: validate: gnuplot not found (Debian: apt-get install gnuplot-nox); no plots\n");
     plot = false;
   }
-  if (plot) std::filesystem::create_directories(plots);
+  // Refused before the cases run, not after: an output that cannot be written.
+  if (plot) {
+    std::error_code ec;
+    std::filesystem::create_directories(plots, ec);
+    if (ec || ::access(plots.c_str(), W_OK | X_OK) != 0) {
+      const std::string reason = ec ? ec.message() : std::strerror(errno);
+      std::fprintf(stderr, "tendril: validate: cannot write plots to %s: %s\n", plots.c_str(), reason.c_str());
+      return 1;
+    }
+  }
+  if (!csv.empty()) {
+    const std::string folder = std::filesystem::path(csv).parent_path().string();
+    if (::access(folder.empty() ? "." : folder.c_str(), W_OK | X_OK) != 0) {
+      std::fprintf(stderr, "tendril: validate: cannot write %s: %s\n", csv.c_str(), std::strerror(errno));
+      return 1;
+    }
+  }
 
   for (const Case* c : selected)
     std::printf("%s: %s\n  segments = %s; default %s, %s damping, %d segments, %s\n", c->name.c_str(),
@@ -79,6 +99,7 @@ int run_validate(int argc, char** argv) {
   Table table(stdout, selected);
   table.header();
   std::vector<Row> rows, failed_defaults;
+  bool output_failed = false;
   for (const Case* c : selected) {
     for (const Setting& s : matrix(*c, options.quick)) {
       rows.push_back(run_setting(*c, s, options));
@@ -88,6 +109,7 @@ int run_validate(int argc, char** argv) {
     if (plot) {
       const std::string problem = tendril::validate::plot(*c, rows, plots);
       if (!problem.empty()) std::fprintf(stderr, "tendril: validate: %s\n", problem.c_str());
+      output_failed |= !problem.empty();
     }
   }
 
@@ -104,6 +126,7 @@ int run_validate(int argc, char** argv) {
     for (const Row& r : failed_defaults) std::fprintf(stderr, "tendril: validate: %s\n", default_failure(r).c_str());
     return 1;
   }
+  if (output_failed) return 1;
   std::printf("\nevery case within its tolerance under its default settings\n");
   return 0;
 }

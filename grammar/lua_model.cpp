@@ -13,6 +13,7 @@
 #include "io/model_xml.hpp"
 #include "io/obj.hpp"
 #include "lua_args.hpp"
+#include "lua_files.hpp"
 #include "lua_meshing.hpp"
 #include "lua_multires.hpp"
 #include "lua_patch_formulation.hpp"
@@ -1011,6 +1012,7 @@ void open_tendril(lua_State* L, const SceneOptions& options) {
   set_fn<l_load>(L, "load");
   set_fn<l_out>(L, "out");
   set_fn<l_param>(L, "param");
+  add_file_functions(L);
   add_rule_constructor(L);
   lua_pushinteger(L, options.seed);
   lua_setfield(L, -2, "seed");

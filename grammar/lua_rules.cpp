@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <memory>
 #include <sstream>
 
+#include "io/atomic_file.hpp"
 #include "lua_args.hpp"
 
 namespace tendril::lua {
@@ -270,13 +270,13 @@ int l_assembly(lua_State* L) {
 int l_save_journal(lua_State* L) {
   Scene& s = check_scene(L, "save_journal");
   if (lua_type(L, 2) != LUA_TSTRING) arg_error("save_journal", 2, "expected a file name");
-  // The assembly sequence as comments, then the replayable trace.
-  std::ofstream out(lua_tostring(L, 2));
-  out << "# tendril journal 1: replay with `tendril replay FILE`\n";
+  // The assembly sequence as comments, then the replayable trace; written
+  // whole or not at all, so a full disk is an error and the old journal stays.
+  std::string text = "# tendril journal 1: replay with `tendril replay FILE`\n";
   std::istringstream table(s.journal.assembly_sequence());
-  for (std::string line; std::getline(table, line);) out << "# " << line << "\n";
-  for (const std::string& line : s.trace.lines(s.solver)) out << line << "\n";
-  if (!out) throw ModelError(std::string("save_journal: cannot write ") + lua_tostring(L, 2));
+  for (std::string line; std::getline(table, line);) text += "# " + line + "\n";
+  for (const std::string& line : s.trace.lines(s.solver)) text += line + "\n";
+  write_file_atomically(lua_tostring(L, 2), text);
   return 0;
 }
 

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <iterator>
 #include <map>
+#include <sstream>
 #include <stdexcept>
+
+#include "io/atomic_file.hpp"
 
 namespace tendril::validate {
 
@@ -115,8 +117,7 @@ void Table::row(const Row& r) const {
 }
 
 void write_csv(const std::string& path, const std::vector<Row>& rows) {
-  std::ofstream f(path);
-  if (!f) throw std::runtime_error("cannot write " + path);
+  std::ostringstream f;
   f << "case,integrator,formulation,segments,error_percent,steps,force_evaluations,wall_ms,default,"
        "tolerance_percent,converged,failure\n";
   char buf[64];
@@ -129,7 +130,7 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
       << r.outcome.force_evaluations << ',' << buf << ',' << (r.is_default ? 1 : 0) << ',' << percent(r.tolerance)
       << ',' << (r.outcome.converged ? 1 : 0) << ',' << csv_field(r.failure) << '\n';
   }
-  if (!f.flush()) throw std::runtime_error("cannot write " + path);
+  write_file_atomically(path, f.str());
 }
 
 bool gnuplot_available() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
@@ -154,9 +155,8 @@ std::string plot(const Case& c, const std::vector<Row>& rows, const std::string&
 
   auto error_of = [&](const Row& r) { return std::max(100 * r.outcome.error, kFloorPercent); };
   const std::string dat = c.name + ".dat", gp = c.name + ".gp", png = c.name + ".png";
-  {
-    std::ofstream f(dir + "/" + dat);
-    if (!f) return "cannot write " + dir + "/" + dat;
+  try {
+    std::ostringstream f;
     for (const std::string& name : series) {
       f << "# " << name << "\n# segments wall_ms error_percent\n";
       for (const Row* r : points[name]) f << r->segments << ' ' << r->outcome.wall_ms << ' ' << error_of(*r) << '\n';
@@ -164,11 +164,12 @@ std::string plot(const Case& c, const std::vector<Row>& rows, const std::string&
     }
     if (default_row) f << "# default\n" << default_row->segments << ' ' << default_row->outcome.wall_ms << ' '
                        << error_of(*default_row) << "\n\n\n";
-    if (!f.flush()) return "cannot write " + dir + "/" + dat;
+    write_file_atomically(dir + "/" + dat, f.str());
+  } catch (const OutputError& e) {
+    return e.what();
   }
-  {
-    std::ofstream f(dir + "/" + gp);
-    if (!f) return "cannot write " + dir + "/" + gp;
+  try {
+    std::ostringstream f;
     // One colour per integrator, one dash pattern per formulation.
     static const char* const kColours[] = {"#6a3d9a", "#1b9e77", "#1f78b4", "#d95f02", "#e7298a", "#666666",
                                            "#a6761d", "#e6ab02"};
@@ -184,7 +185,8 @@ std::string plot(const Case& c, const std::vector<Row>& rows, const std::string&
     };
     f << "# Written by `tendril validate --plots`: error against wall time for case " << c.name << ".\n"
       << "set terminal pngcairo size 960,640 font 'sans,11'\n"
-      << "set output " << gnuplot_quote(png) << "\n"
+      // `out` lets tendril validate render to a temporary file and rename it.
+      << "if (!exists('out')) out = " << gnuplot_quote(png) << "\nset output out\n"
       << "set title " << gnuplot_quote(c.name + "\n" + wrap(c.reference, 100)) << " noenhanced font 'sans,10'\n"
       << "set logscale xy\nset format y '%g'\nset format x '%g'\n"
       << "set autoscale fix\nset offsets graph 0.04, graph 0.04, graph 0.06, graph 0.06\n"
@@ -210,12 +212,23 @@ std::string plot(const Case& c, const std::vector<Row>& rows, const std::string&
     f << ", \\\n  " << 100 * c.tolerance << " with lines dt 2 lw 1.5 lc rgb '#aa0000' title "
       << gnuplot_quote("tolerance " + percent(c.tolerance) + " %") << "\n";
     if (floored) f << "# errors of exactly 0 are drawn at " << kFloorPercent << " %\n";
-    if (!f.flush()) return "cannot write " + dir + "/" + gp;
+    write_file_atomically(dir + "/" + gp, f.str());
+  } catch (const OutputError& e) {
+    return e.what();
   }
-  const std::string command =
-      "cd " + shell_quote(dir) + " && gnuplot " + shell_quote(gp) + " 2>" + shell_quote(c.name + ".gnuplot.log");
-  if (std::system(command.c_str()) != 0)
+  // gnuplot draws into a temporary name; the picture replaces the old one
+  // only when it is complete.
+  const std::string temp_png = "." + png + ".tmp";
+  const std::string command = "cd " + shell_quote(dir) + " && gnuplot -e " + shell_quote("out='" + temp_png + "'") +
+                              " " + shell_quote(gp) + " 2>" + shell_quote(c.name + ".gnuplot.log");
+  if (std::system(command.c_str()) != 0) {
+    std::remove((dir + "/" + temp_png).c_str());
     return "gnuplot failed on " + dir + "/" + gp + " (see " + dir + "/" + c.name + ".gnuplot.log)";
+  }
+  if (std::rename((dir + "/" + temp_png).c_str(), (dir + "/" + png).c_str()) != 0) {
+    std::remove((dir + "/" + temp_png).c_str());
+    return "cannot move " + dir + "/" + temp_png + " to " + png;
+  }
   std::remove((dir + "/" + c.name + ".gnuplot.log").c_str());
   return "";
 }

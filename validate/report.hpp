@@ -26,7 +26,7 @@ std::string percent(double relative);  // "0.0723", "1.2e-05": three significant
 // The table's note column: default marks, failures, non-convergence.
 std::string note(const Row& r);
 
-// Throws std::runtime_error if the file cannot be written.
+// Written whole or not at all; throws OutputError if it cannot be (io/atomic_file.hpp).
 void write_csv(const std::string& path, const std::vector<Row>& rows);
 
 bool gnuplot_available();

@@ -7,15 +7,16 @@
 
 #include <tinyxml2.h>
 
+#include "io/atomic_file.hpp"
+#include "io/input_file.hpp"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -1234,12 +1235,7 @@ void load(const std::string& xml, const std::string& name, Model& m, SolverSetti
 std::string model_xml_string(const Model& m, const SolverSettings& s) { return write_document(m, s); }
 
 void save_model_xml(const Model& m, const SolverSettings& s, const std::string& path) {
-  const std::string text = write_document(m, s);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw ModelError("save_model_xml: cannot open " + path + " for writing");
-  out.write(text.data(), std::streamsize(text.size()));
-  out.close();
-  if (!out) throw ModelError("save_model_xml: writing " + path + " failed");
+  write_file_atomically(path, write_document(m, s));
 }
 
 void load_model_xml_string(const std::string& xml, Model& m, SolverSettings& s, const std::string& name) {
@@ -1247,12 +1243,7 @@ void load_model_xml_string(const std::string& xml, Model& m, SolverSettings& s, 
 }
 
 void load_model_xml(const std::string& path, Model& m, SolverSettings& s) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ModelError("load_model_xml: cannot open " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw ModelError("load_model_xml: reading " + path + " failed");
-  load(text.str(), path, m, s);
+  load(read_input_file(path), path, m, s);
 }
 
 }  // namespace tendril

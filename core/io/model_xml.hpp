@@ -50,12 +50,14 @@ struct ModelFormatError : ModelError {
   using ModelError::ModelError;
 };
 
-// Throws ModelError when the file cannot be written.
+// Written whole or not at all (io/atomic_file.hpp); throws OutputError when
+// the file cannot be written.
 void save_model_xml(const Model& m, const SolverSettings& s, const std::string& path);
 std::string model_xml_string(const Model& m, const SolverSettings& s);
 
 // `m` must be a fresh Model. On any error (ModelFormatError for a bad
-// document, ModelError for an unreadable file) `m` and `s` are unchanged.
+// document, InputError for an unreadable file or one that is not a regular
+// file, io/input_file.hpp) `m` and `s` are unchanged.
 void load_model_xml(const std::string& path, Model& m, SolverSettings& s);
 // Same, from a string; `name` stands for the file in error messages.
 void load_model_xml_string(const std::string& xml, Model& m, SolverSettings& s,

@@ -1,9 +1,10 @@
 #include "io/obj.hpp"
 
+#include "io/atomic_file.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <deque>
-#include <fstream>
 #include <unordered_map>
 #include <vector>
 
@@ -99,11 +100,7 @@ std::string obj_string(const Model& m) {
 
 void save_obj(const Model& m, const std::string& path) {
   const std::string text = obj_string(m);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw ModelError("save_obj: cannot open " + path + " for writing");
-  out.write(text.data(), std::streamsize(text.size()));
-  out.close();
-  if (!out) throw ModelError("save_obj: writing " + path + " failed");
+  write_file_atomically(path, text);
 }
 
 }  // namespace tendril

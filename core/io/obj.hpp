@@ -10,7 +10,7 @@
 namespace tendril {
 
 std::string obj_string(const Model& m);
-// Throws ModelError when the file cannot be written.
+// Written whole or not at all; throws OutputError when it cannot be (io/atomic_file.hpp).
 void save_obj(const Model& m, const std::string& path);
 
 }  // namespace tendril

@@ -375,7 +375,8 @@ function tendril.report(m, extra)
     local v = row[k]
     values[i] = type(v) == "number" and string.format("%.10g", v) or tostring(v)
   end
-  local f = assert(io.open(tendril.out("summary.csv"), "w"))
-  f:write(table.concat(keys, ","), "\n", table.concat(values, ","), "\n")
-  f:close()
+  -- Called through pcall, the error has no place of its own: it takes the scene's.
+  local ok, err = pcall(tendril.write_file, tendril.out("summary.csv"),
+                        table.concat(keys, ",") .. "\n" .. table.concat(values, ",") .. "\n")
+  if not ok then error("tendril.report: " .. err, 2) end
 end

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <tuple>
 
+#include "io/atomic_file.hpp"
+#include "io/input_file.hpp"
 #include "io/model_xml.hpp"
 #include "io/obj.hpp"
 
@@ -244,9 +246,9 @@ TEST_CASE("model database: loading needs a fresh model and leaves a used one alo
   CHECK(s.dt == SolverSettings{}.dt);
 
   Model fresh;
-  CHECK_THROWS_AS(load_model_xml(temp_path("does-not-exist.xml"), fresh, s), ModelError);
+  CHECK_THROWS_AS(load_model_xml(temp_path("does-not-exist.xml"), fresh, s), InputError);
   CHECK(fresh.particles.capacity() == 0);
-  CHECK_THROWS_AS(save_model_xml(a.m, a.s, "/nonexistent-dir/x.xml"), ModelError);
+  CHECK_THROWS_AS(save_model_xml(a.m, a.s, "/nonexistent-dir/x.xml"), OutputError);
 }
 
 TEST_CASE("model database: a hand-written file with sparse ids and defaults") {

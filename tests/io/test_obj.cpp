@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/atomic_file.hpp"
 #include "io/obj.hpp"
 
 using namespace tendril;
@@ -52,7 +53,7 @@ TEST_CASE("obj: vertices renumbered densely, polylines for beams and cables, ori
   std::ostringstream text;
   text << in.rdbuf();
   CHECK(text.str() == expected);
-  CHECK_THROWS_AS(save_obj(m, "/nonexistent-dir/x.obj"), ModelError);
+  CHECK_THROWS_AS(save_obj(m, "/nonexistent-dir/x.obj"), OutputError);
 }
 
 TEST_CASE("obj: every quad of a larger grid once, all wound like the first") {
