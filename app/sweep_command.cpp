@@ -6,18 +6,29 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "command.hpp"
+#include "io/csv.hpp"
+#include "scene_declarations.hpp"
+
 extern char** environ;
+
+namespace tendril::app {
 
 namespace {
 
@@ -38,13 +49,6 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-  return out + "\"";
-}
-
 std::string last_line(const std::string& path) {
   std::ifstream in(path);
   std::string line, last;
@@ -55,59 +59,50 @@ std::string last_line(const std::string& path) {
 
 void read_summary(Run& r) {
   std::ifstream in(r.dir + "/summary.csv");
-  std::string header, values;
-  if (!std::getline(in, header) || !std::getline(in, values)) return;
-  auto keys = split(header, ','), vals = split(values, ',');
-  for (std::size_t k = 0; k < keys.size() && k < vals.size(); ++k) r.summary[keys[k]] = vals[k];
+  const auto rows = tendril::parse_csv(std::string(std::istreambuf_iterator<char>(in), {}));
+  if (rows.size() < 2) return;
+  for (std::size_t k = 0; k < rows[0].size() && k < rows[1].size(); ++k) r.summary[rows[0][k]] = rows[1][k];
 }
 
-int usage(const char* why) {
-  std::fprintf(stderr,
-               "tendril: sweep: %s\n\nusage: tendril sweep SCENE.lua --param NAME=V1,V2,... [--param ...] "
-               "--seeds A..B [--jobs N] [--out DIR] [--steps N]\n",
-               why);
-  return 2;
+std::int64_t whole_number(const std::string& text, const std::string& what) {
+  std::int64_t v = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, v);
+  if (error != std::errc() || stop != end) throw UsageError(what + ": '" + text + "' is not a whole number");
+  return v;
 }
 
-}  // namespace
+struct SweepArguments {
+  std::string scene, out = "sweep", seeds;
+  std::vector<std::string> params;
+  std::int64_t jobs = 1, steps = -1;
+};
 
-int run_sweep(int argc, char** argv) {
-  std::string scene, out = "sweep", steps;
+int run_sweep(const SweepArguments& a) {
+  const std::string& scene = a.scene;
+  const std::string& out = a.out;
+  if (a.params.empty() && a.seeds.empty())
+    throw UsageError("nothing to sweep: give --param NAME=V1,V2,... or --seeds A..B (or both)");
   std::vector<std::pair<std::string, std::vector<std::string>>> params;
-  long long first = 1, last = 1;
-  int jobs = 1;
-  for (int i = 2; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
-    if (arg == "--param") {
-      const std::string kv = value();
-      const auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0 || eq + 1 == kv.size()) return usage("--param needs NAME=V1,V2,...");
-      params.push_back({kv.substr(0, eq), split(kv.substr(eq + 1), ',')});
-    } else if (arg == "--seeds") {
-      const std::string range = value();
-      const auto dots = range.find("..");
-      try {
-        first = std::stoll(range.substr(0, dots));
-        last = dots == std::string::npos ? first : std::stoll(range.substr(dots + 2));
-      } catch (...) {
-        return usage("--seeds needs A..B");
-      }
-      if (last < first) return usage("--seeds needs A <= B");
-    } else if (arg == "--jobs") {
-      jobs = std::atoi(value().c_str());
-      if (jobs < 1) return usage("--jobs needs a positive number");
-    } else if (arg == "--out") {
-      out = value();
-    } else if (arg == "--steps") {
-      steps = value();
-    } else if (scene.empty() && arg[0] != '-') {
-      scene = arg;
-    } else {
-      return usage(("unexpected argument '" + arg + "'").c_str());
-    }
+  std::vector<std::string> names;
+  for (const std::string& p : a.params) {
+    auto [name, values] = split_param(p);
+    if (values.empty()) throw UsageError("--param " + name + " needs values: " + name + "=V1,V2,...");
+    if (std::find(names.begin(), names.end(), name) != names.end())
+      throw UsageError("--param " + name + " is given twice");
+    names.push_back(name);
+    params.push_back({name, split(values, ',')});
   }
-  if (scene.empty()) return usage("needs a scene");
+  std::int64_t first = 1, last = 1;
+  if (!a.seeds.empty()) {
+    const auto dots = a.seeds.find("..");
+    first = whole_number(a.seeds.substr(0, dots), "--seeds");
+    last = dots == std::string::npos ? first : whole_number(a.seeds.substr(dots + 2), "--seeds");
+    if (last < first) throw UsageError("--seeds " + a.seeds + ": the first seed is after the last");
+  }
+  check_declared(scene, names);
+  const std::string steps = a.steps >= 0 ? std::to_string(a.steps) : "";
+  const std::int64_t jobs = a.jobs;
 
   // Every combination, parameters in the order given, then seeds.
   std::vector<Run> runs(1);
@@ -178,25 +173,52 @@ int run_sweep(int argc, char** argv) {
     for (const auto& [k, v] : r.summary) keys.insert(k);
   std::ofstream csv(out + "/sweep.csv");
   csv << "run";
-  for (const auto& [name, values] : params) csv << "," << csv_field(name);
-  csv << ",seed,status,wall_time_s";
-  for (const std::string& k : keys) csv << "," << csv_field(k);
-  csv << ",error\n";
+  std::vector<std::string> header{"run"};
+  for (const auto& [name, values] : params) header.push_back(name);
+  header.insert(header.end(), {"seed", "status", "wall_time_s"});
+  header.insert(header.end(), keys.begin(), keys.end());
+  header.push_back("error");
+  csv << tendril::csv_line(header) << "\n";
   int failed = 0;
   for (std::size_t n = 0; n < all.size(); ++n) {
     const Run& r = all[n];
-    csv << n + 1;
-    for (const auto& [name, v] : r.params) csv << "," << csv_field(v);
+    std::vector<std::string> row{std::to_string(n + 1)};
+    for (const auto& [name, v] : r.params) row.push_back(v);
     char secs[32];
     std::snprintf(secs, sizeof secs, "%.3f", r.seconds);
-    csv << "," << r.seed << "," << (r.status == 0 ? "ok" : "failed") << "," << secs;
-    for (const std::string& k : keys) csv << "," << (r.summary.count(k) ? csv_field(r.summary.at(k)) : "");
-    csv << "," << csv_field(r.error) << "\n";
+    row.insert(row.end(), {std::to_string(r.seed), r.status == 0 ? "ok" : "failed", secs});
+    for (const std::string& k : keys) row.push_back(r.summary.count(k) ? r.summary.at(k) : "");
+    row.push_back(r.error);
+    csv << tendril::csv_line(row) << "\n";
     failed += r.status != 0;
   }
   csv.close();
   std::ifstream back(out + "/sweep.csv");
   std::printf("%s", std::string(std::istreambuf_iterator<char>(back), {}).c_str());
   std::fprintf(stderr, "[tendril] sweep: %zu runs, %d failed -> %s/sweep.csv\n", all.size(), failed, out.c_str());
-  return 0;
+  return failed ? kSceneError : kOk;
 }
+
+}  // namespace
+
+Command sweep_command() {
+  return {"sweep", "runs a scene for every combination of parameters and seeds; one CSV row per run",
+          [](CLI::App& cli) {
+            auto a = std::make_shared<SweepArguments>();
+            constexpr auto kMax = std::numeric_limits<std::int64_t>::max();
+            add_scene(cli, a->scene);
+            cli.add_option("--param", a->params, "values of tendril.param(NAME, default) to sweep (repeatable)")
+                ->type_name("NAME=V1,V2,...")
+                ->expected(1)
+                ->take_all();
+            cli.add_option("--seeds", a->seeds, "the seeds of every combination, A to B")->type_name("A..B");
+            add_integer(cli, "--jobs", a->jobs, 1, 4096, "runs at once")->capture_default_str();
+            cli.add_option("--out", a->out, "the sweep's folder: sweep.csv and a folder per run")
+                ->type_name("DIR")
+                ->capture_default_str();
+            add_integer(cli, "--steps", a->steps, 0, kMax, "caps the steps of every run{} and step() of each run");
+            return [a] { return run_sweep(*a); };
+          }};
+}
+
+}  // namespace tendril::app

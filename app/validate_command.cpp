@@ -9,67 +9,48 @@
 #include <cstring>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "command.hpp"
 #include "registry.hpp"
 #include "report.hpp"
 #include "runner.hpp"
 
+namespace tendril::app {
+
 namespace {
 
-const char* const kValidateUsage =
-    "usage: tendril validate [--csv FILE] [--plots DIR] [--quick] [--case NAME]...\n"
-    "  --csv    writes the table's rows to FILE\n"
-    "  --plots  writes DIR/CASE.png (error against wall time, log-log; needs gnuplot)\n"
-    "  --quick  every integrator at the coarsest resolution, the defaults at theirs (for CI)\n"
-    "  --case   runs only this case (repeatable)\n";
-
-}  // namespace
-
-int run_validate(int argc, char** argv) {
-  using namespace tendril::validate;
+struct ValidateArguments {
   std::string csv, plots;
+  bool quick = false;
+  std::vector<std::string> cases;
+};
+
+int validate(const ValidateArguments& a) {
+  using namespace tendril::validate;
   RunOptions options;
+  options.quick = a.quick;
   std::vector<const Case*> selected;
-  try {
-    for (int i = 2; i < argc; ++i) {
-      const std::string arg = argv[i];
-      auto value = [&]() -> std::string {
-        if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
-        return argv[++i];
-      };
-      if (arg == "--csv") csv = value();
-      else if (arg == "--plots") plots = value();
-      else if (arg == "--quick") options.quick = true;
-      else if (arg == "--case") {
-        const std::string name = value();
-        const Case* c = find_case(name);
-        if (!c) {
-          std::string known;
-          for (const Case& k : cases()) known += " " + k.name;
-          throw std::invalid_argument("no case '" + name + "'; the cases are:" + known);
-        }
-        if (std::find(selected.begin(), selected.end(), c) == selected.end()) selected.push_back(c);
-      } else if (arg == "--help" || arg == "-h") {
-        std::fputs(kValidateUsage, stdout);
-        return 0;
-      } else {
-        throw std::invalid_argument("unexpected argument '" + arg + "'");
-      }
+  for (const std::string& name : a.cases) {
+    const Case* c = find_case(name);
+    if (!c) {
+      std::string known;
+      for (const Case& k : cases()) known += " " + k.name;
+      throw UsageError("--case: no case '" + name + "'; the cases are:" + known);
     }
-  } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "tendril: validate: %s\n\n%s", e.what(), kValidateUsage);
-    return 2;
+    if (std::find(selected.begin(), selected.end(), c) == selected.end()) selected.push_back(c);
   }
   if (selected.empty())
     for (const Case& c : cases()) selected.push_back(&c);
   if (options.quick) options.max_runs = 1;
 
+  const std::string& plots = a.plots;
   bool plot = !plots.empty();
   if (plot && !gnuplot_available()) {
-    std::fprintf(stderr, "tendril: validate: gnuplot not found (Debian: apt-get install gnuplot-nox); no plots\n");
+    std::fprintf(stderr, "tendril validate: gnuplot not found (Debian: apt-get install gnuplot-nox); no plots\n");
     plot = false;
   }
   // Refused before the cases run, not after: an output that cannot be written.
@@ -78,14 +59,14 @@ int run_validate(int argc, char** argv) {
     std::filesystem::create_directories(plots, ec);
     if (ec || ::access(plots.c_str(), W_OK | X_OK) != 0) {
       const std::string reason = ec ? ec.message() : std::strerror(errno);
-      std::fprintf(stderr, "tendril: validate: cannot write plots to %s: %s\n", plots.c_str(), reason.c_str());
+      std::fprintf(stderr, "tendril validate: cannot write plots to %s: %s\n", plots.c_str(), reason.c_str());
       return 1;
     }
   }
-  if (!csv.empty()) {
-    const std::string folder = std::filesystem::path(csv).parent_path().string();
+  if (!a.csv.empty()) {
+    const std::string folder = std::filesystem::path(a.csv).parent_path().string();
     if (::access(folder.empty() ? "." : folder.c_str(), W_OK | X_OK) != 0) {
-      std::fprintf(stderr, "tendril: validate: cannot write %s: %s\n", csv.c_str(), std::strerror(errno));
+      std::fprintf(stderr, "tendril validate: cannot write %s: %s\n", a.csv.c_str(), std::strerror(errno));
       return 1;
     }
   }
@@ -108,25 +89,40 @@ int run_validate(int argc, char** argv) {
     }
     if (plot) {
       const std::string problem = tendril::validate::plot(*c, rows, plots);
-      if (!problem.empty()) std::fprintf(stderr, "tendril: validate: %s\n", problem.c_str());
+      if (!problem.empty()) std::fprintf(stderr, "tendril validate: %s\n", problem.c_str());
       output_failed |= !problem.empty();
     }
   }
 
-  if (!csv.empty()) {
-    try {
-      write_csv(csv, rows);
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "tendril: validate: %s\n", e.what());
-      return 1;
-    }
-  }
+  if (!a.csv.empty()) write_csv(a.csv, rows);
   if (plot) std::printf("\nplots: %s/<case>.png\n", plots.c_str());
   if (!failed_defaults.empty()) {
-    for (const Row& r : failed_defaults) std::fprintf(stderr, "tendril: validate: %s\n", default_failure(r).c_str());
-    return 1;
+    for (const Row& r : failed_defaults) std::fprintf(stderr, "tendril validate: %s\n", default_failure(r).c_str());
+    return kSceneError;
   }
-  if (output_failed) return 1;
+  if (output_failed) return kSceneError;
   std::printf("\nevery case within its tolerance under its default settings\n");
-  return 0;
+  return kOk;
 }
+
+}  // namespace
+
+Command validate_command() {
+  return {"validate",
+          "runs every validation case with each integrator and resolution; fails when a default misses its tolerance",
+          [](CLI::App& cli) {
+            auto a = std::make_shared<ValidateArguments>();
+            cli.add_option("--csv", a->csv, "writes the table's rows to FILE")->type_name("FILE");
+            cli.add_option("--plots", a->plots, "writes DIR/CASE.png: error against wall time (gnuplot)")
+                ->type_name("DIR");
+            cli.add_flag("--quick", a->quick,
+                         "every integrator at the coarsest resolution, the defaults at theirs (for CI)");
+            cli.add_option("--case", a->cases, "runs only this case (repeatable)")
+                ->type_name("NAME")
+                ->expected(1)
+                ->take_all();
+            return [a] { return validate(*a); };
+          }};
+}
+
+}  // namespace tendril::app

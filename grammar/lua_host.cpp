@@ -7,6 +7,8 @@
 #include <memory>
 
 #include "lua_model.hpp"
+#include "lua_params.hpp"
+#include "lua_scene.hpp"
 
 namespace tendril {
 
@@ -23,11 +25,19 @@ int traceback(lua_State* L) {
 }
 }  // namespace
 
-int run_scene(const std::string& path, const SceneOptions& options, std::string* error) {
+int run_scene(const std::string& path, const SceneOptions& options, std::string* error, SceneReport* report) {
+  SceneReport own_report;
+  if (!report) report = &own_report;
+  *report = SceneReport{};
+  lua::g_report = report;
   auto fail = [&](const char* message) {
+    // A --param the scene does not take is the caller's mistake, not the
+    // scene's: the message alone, without the scene's traceback.
+    const bool usage = !report->usage_error.empty();
+    if (usage) message = report->usage_error.c_str();
     if (error) *error = message;
-    else std::fprintf(stderr, "tendril: error: %s\n", message);
-    return 1;
+    else std::fprintf(stderr, "tendril: %s%s\n", usage ? "" : "error: ", message);
+    return usage ? 2 : 1;
   };
   std::unique_ptr<lua_State, decltype(&lua_close)> state(luaL_newstate(), &lua_close);
   lua_State* L = state.get();
@@ -50,7 +60,12 @@ int run_scene(const std::string& path, const SceneOptions& options, std::string*
 
   lua_pushcfunction(L, traceback);
   if (luaL_loadfile(L, path.c_str()) != LUA_OK) return fail(lua_tostring(L, -1));
-  if (lua_pcall(L, 0, 0, -2) != LUA_OK) return fail(lua_tostring(L, -1));
+  if (lua_pcall(L, 0, 0, -2) != LUA_OK) {
+    if (options.declarations_only && report->stepped) return 0;
+    return fail(lua_tostring(L, -1));
+  }
+  if (!report->stepped) report->usage_error = lua::undeclared_param(options, *report);
+  if (!report->usage_error.empty()) return fail("");
   return 0;
 }
 

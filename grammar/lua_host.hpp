@@ -17,11 +17,31 @@ struct SceneOptions {
   std::vector<std::pair<std::string, std::string>> preload;
   // --param NAME=VALUE pairs, read by tendril.param(name, default).
   std::vector<std::pair<std::string, std::string>> params;
+  // Runs the scene only up to its first m:run{} or m:step(), to read the
+  // parameters it declares (`tendril params`, and sweep before it starts).
+  bool declarations_only = false;
+};
+
+// What a scene declared and how its runs ended, for the command line.
+struct SceneReport {
+  struct Param {
+    std::string name;
+    std::string default_value;  // as the scene wrote it; a number as %.14g
+  };
+  std::vector<Param> params;  // every tendril.param(name, default), in order
+  bool stepped = false;       // the scene called m:run{} or m:step()
+  bool ran = false;           // the scene called m:run{}
+  bool converged = true;      // the last m:run{} converged
+  std::string last_run;       // how the last m:run{} ended, in words
+  std::string usage_error;    // set when the scene was given a --param it does not take
 };
 
 // Runs the scene file. Returns 0 on success; on a Lua error returns 1 after
 // printing the message (file:line) and a traceback to stderr, or storing
-// them in *error when it is given.
-int run_scene(const std::string& path, const SceneOptions& options, std::string* error = nullptr);
+// them in *error when it is given; returns 2 when a --param names nothing the
+// scene declares (tendril.param) or gives a number parameter a word. *report,
+// when given, receives the declarations and the last run's outcome.
+int run_scene(const std::string& path, const SceneOptions& options, std::string* error = nullptr,
+              SceneReport* report = nullptr);
 
 }  // namespace tendril

@@ -3,7 +3,6 @@
 // deleted is refused with a clear error instead of aliasing a recycled slot.
 #include "lua_model.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <initializer_list>
 #include <cstdio>
@@ -14,8 +13,10 @@
 #include "io/obj.hpp"
 #include "lua_args.hpp"
 #include "lua_files.hpp"
+#include "lua_csv.hpp"
 #include "lua_meshing.hpp"
 #include "lua_multires.hpp"
+#include "lua_params.hpp"
 #include "lua_patch_formulation.hpp"
 #include "lua_goals.hpp"
 #include "lua_query.hpp"
@@ -23,6 +24,7 @@
 #include "lua_scene.hpp"
 #include "model/model.hpp"
 #include "physics/solver.hpp"
+#include "run_progress.hpp"
 
 namespace tendril::lua {
 
@@ -231,20 +233,6 @@ int l_load(lua_State* L) {
   Scene& s = push_new_scene(L);
   load_model_xml(path, s.model, s.solver.settings);
   s.record("open " + path);
-  return 1;
-}
-
-// tendril.param(name, default): the --param value (a number when it reads as
-// one, else a string), or the default.
-int l_param(lua_State* L) {
-  if (lua_type(L, 1) != LUA_TSTRING) arg_error("tendril.param", 1, "expected a parameter name");
-  const std::string name = lua_tostring(L, 1);
-  for (const auto& [key, value] : g_options->params) {
-    if (key != name) continue;
-    if (lua_stringtonumber(L, value.c_str()) == 0) lua_pushstring(L, value.c_str());
-    return 1;
-  }
-  lua_settop(L, 2);
   return 1;
 }
 
@@ -658,21 +646,19 @@ int l_run(lua_State* L) {
   if (!(tolerance > 0)) key_error(fn, "tolerance", "must be > 0");
   if (!(max_steps >= 0) || max_steps != std::floor(max_steps)) key_error(fn, "max_steps", "must be an integer >= 0");
   auto cap = std::uint64_t(max_steps);
-  if (s.options->max_steps >= 0) cap = std::min<std::uint64_t>(cap, std::uint64_t(s.options->max_steps));
-  const auto start = std::chrono::steady_clock::now();
-  auto last = start;
-  auto progress = [&](const RunResult& r) {
-    const auto now = std::chrono::steady_clock::now();
-    if (!s.options->progress || now - last < std::chrono::seconds(1)) return;
-    last = now;
-    std::fprintf(stderr, "[tendril] step %llu (this run %llu)  residual %.3e N  particles %zu  %.1f s\n",
-                 static_cast<unsigned long long>(s.solver.steps()), static_cast<unsigned long long>(r.steps),
-                 r.residual, s.model.particle_count(), std::chrono::duration<double>(now - start).count());
-  };
-  if (s.triggers.empty()) {
-    push_run_result(L, s.solver.run(tolerance, cap, progress, 1000));
+  const bool capped_by_option = s.options->max_steps >= 0 && std::uint64_t(s.options->max_steps) < cap;
+  if (capped_by_option) cap = std::uint64_t(s.options->max_steps);
+  begin_stepping();
+  RunProgress meter(s.options->progress, tolerance, cap, capped_by_option);
+  auto progress = [&](const RunResult& r) { meter.update(r, s.solver.steps(), s.model.particle_count()); };
+  auto finish = [&](const RunResult& r) {
+    g_report->ran = true;
+    g_report->converged = r.converged;
+    g_report->last_run = meter.finish(r);
+    push_run_result(L, r);
     return 1;
-  }
+  };
+  if (s.triggers.empty()) return finish(s.solver.run(tolerance, cap, progress, 100));
   // With triggers, rules run between steps; a rule that changes the model at
   // equilibrium keeps the run going.
   RunResult r;
@@ -686,10 +672,9 @@ int l_run(lua_State* L) {
       r.converged = true;
       break;
     }
-    if (r.steps % 1000 == 0) progress(r);
+    if (r.steps % 100 == 0) progress(r);
   }
-  push_run_result(L, r);
-  return 1;
+  return finish(r);
 }
 
 int l_step(lua_State* L) {
@@ -697,6 +682,7 @@ int l_step(lua_State* L) {
   std::int64_t n = lua_isnoneornil(L, 2) ? 1 : check_integer(L, 2, "step");
   if (n < 0) arg_error("step", 2, "must be >= 0");
   if (s.options->max_steps >= 0) n = std::min(n, s.options->max_steps);
+  begin_stepping();
   for (std::int64_t k = 0; k < n; ++k) {
     s.solver.step();
     if (!s.triggers.empty()) fire_triggers(L, s, false);
@@ -1011,7 +997,8 @@ void open_tendril(lua_State* L, const SceneOptions& options) {
   set_fn<l_new_model>(L, "model");
   set_fn<l_load>(L, "load");
   set_fn<l_out>(L, "out");
-  set_fn<l_param>(L, "param");
+  add_param(L);
+  add_csv(L);
   add_file_functions(L);
   add_rule_constructor(L);
   lua_pushinteger(L, options.seed);

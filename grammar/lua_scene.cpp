@@ -8,6 +8,7 @@ namespace tendril::lua {
 
 
 const SceneOptions* g_options = nullptr;
+SceneReport* g_report = nullptr;
 
 Scene& check_scene(lua_State* L, const char* fn) {
   auto* s = static_cast<Scene**>(luaL_testudata(L, 1, kModelMeta));

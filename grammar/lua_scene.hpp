@@ -42,6 +42,7 @@ struct Handle {
 };
 
 extern const SceneOptions* g_options;  // set by open_tendril for the host's lifetime
+extern SceneReport* g_report;          // set by run_scene for the host's lifetime
 
 Scene& check_scene(lua_State* L, const char* fn);
 ParticleId check_particle(lua_State* L, int idx, Scene& scene, const char* fn);

@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 packages=(cmake g++ ninja-build pkg-config libeigen3-dev liblua5.4-dev lua5.4
-          libcgal-dev libtinyxml2-dev libopenmesh-dev doctest-dev gnuplot-nox)
+          libcgal-dev libtinyxml2-dev libopenmesh-dev doctest-dev gnuplot-nox libcli11-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
+#include "io/csv.hpp"
 
 namespace tendril::validate {
 
@@ -54,13 +55,6 @@ std::string wrap(const std::string& text, std::size_t width) {
   flush_word();
   if (!line.empty()) out += (out.empty() ? "" : "\n") + line;
   return out;
-}
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return q + "\"";
 }
 
 // Three significant digits without an exponent: 0.00234, 10.2, 171, 1234.

@@ -377,6 +377,6 @@ function tendril.report(m, extra)
   end
   -- Called through pcall, the error has no place of its own: it takes the scene's.
   local ok, err = pcall(tendril.write_file, tendril.out("summary.csv"),
-                        table.concat(keys, ",") .. "\n" .. table.concat(values, ",") .. "\n")
+                        tendril.csv_line(keys) .. "\n" .. tendril.csv_line(values) .. "\n")
   if not ok then error("tendril.report: " .. err, 2) end
 end
