@@ -66,6 +66,10 @@ int run_scene(const std::string& path, const SceneOptions& options, std::string*
   }
   if (!report->stepped) report->usage_error = lua::undeclared_param(options, *report);
   if (!report->usage_error.empty()) return fail("");
+  if (options.after_scene) {
+    lua_settop(L, 0);
+    options.after_scene(L);
+  }
   return 0;
 }
 

@@ -1,9 +1,12 @@
 #pragma once
 // Runs scenes in real Lua 5.4 with the `tendril` module (docs/lua-api.md).
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
+
+struct lua_State;
 
 namespace tendril {
 
@@ -20,6 +23,15 @@ struct SceneOptions {
   // Runs the scene only up to its first m:run{} or m:step(), to read the
   // parameters it declares (`tendril params`, and sweep before it starts).
   bool declarations_only = false;
+  // A front end that watches the scene (the studio) hooks in here. after_step
+  // runs after every solver step the scene takes (run{} and step()), with the
+  // stepping model's userdata at stack index 1; after_scene runs once the
+  // scene's chunk returned, with the Lua state still open. Both run on the
+  // thread that runs the scene, so the model is only ever touched by it.
+  // after_step returns true when it changed the model: a run{} at
+  // equilibrium then goes on.
+  std::function<bool(lua_State*)> after_step;
+  std::function<void(lua_State*)> after_scene;
 };
 
 // What a scene declared and how its runs ended, for the command line.

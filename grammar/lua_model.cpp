@@ -658,7 +658,8 @@ int l_run(lua_State* L) {
     push_run_result(L, r);
     return 1;
   };
-  if (s.triggers.empty()) return finish(s.solver.run(tolerance, cap, progress, 100));
+  const auto& after_step = s.options->after_step;
+  if (s.triggers.empty() && !after_step) return finish(s.solver.run(tolerance, cap, progress, 100));
   // With triggers, rules run between steps; a rule that changes the model at
   // equilibrium keeps the run going.
   RunResult r;
@@ -667,7 +668,8 @@ int l_run(lua_State* L) {
     ++r.steps;
     r.residual = s.solver.residual();
     const bool converged = r.residual < tolerance && s.solver.motion() < tolerance;
-    const bool changed = fire_triggers(L, s, converged);
+    bool changed = !s.triggers.empty() && fire_triggers(L, s, converged);
+    if (after_step) changed |= after_step(L);
     if (converged && !changed) {
       r.converged = true;
       break;
@@ -686,6 +688,7 @@ int l_step(lua_State* L) {
   for (std::int64_t k = 0; k < n; ++k) {
     s.solver.step();
     if (!s.triggers.empty()) fire_triggers(L, s, false);
+    if (s.options->after_step) s.options->after_step(L);
   }
   lua_pushnumber(L, s.solver.residual());
   return 1;

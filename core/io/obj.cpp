@@ -20,10 +20,11 @@ void put(std::string& out, double v) {
 
 void put_index(std::string& out, std::uint32_t v) { out += std::to_string(v); }
 
-// Faces of one patch, each once, each starting on a dart of the same
-// orientation class as the block's start dart (the map is 2-coloured by
-// alpha0, alpha1, alpha2 each flipping the class), so all quads wind alike.
-// A face starts at its lowest particle id.
+}  // namespace
+
+// Each face starts on a dart of the same orientation class as the block's
+// start dart (the map is 2-coloured by alpha0, alpha1, alpha2 each flipping
+// the class), so all quads wind alike.
 std::vector<std::vector<ParticleId>> patch_faces(const Model& m, BlockId b) {
   const GMap& map = m.map;
   std::unordered_map<Dart, bool> positive;  // dart -> orientation class
@@ -56,8 +57,6 @@ std::vector<std::vector<ParticleId>> patch_faces(const Model& m, BlockId b) {
   }
   return faces;
 }
-
-}  // namespace
 
 std::string obj_string(const Model& m) {
   const Particles& ps = m.particles;

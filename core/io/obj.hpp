@@ -4,12 +4,16 @@
 // beam (a ring repeats its first vertex), one "f" per patch quad, all
 // consistently oriented within a patch. Doubles carry 17 significant digits.
 #include <string>
+#include <vector>
 
 #include "model/model.hpp"
 
 namespace tendril {
 
 std::string obj_string(const Model& m);
+// The faces of patch b, each once, consistently wound, each starting at its
+// lowest particle id (what the "f" lines hold; the studio draws them too).
+std::vector<std::vector<ParticleId>> patch_faces(const Model& m, BlockId b);
 // Written whole or not at all; throws OutputError when it cannot be (io/atomic_file.hpp).
 void save_obj(const Model& m, const std::string& path);
 

@@ -40,6 +40,9 @@ class Trace {
   }
   // All lines, with the steps still pending at `s`.
   std::vector<std::string> lines(const Solver& s) const;
+  // The recorded lines one by one (without the pending steps).
+  std::size_t size() const { return lines_.size(); }
+  const std::string& line(std::size_t k) const { return lines_[k]; }
 
   static std::string number(double x);  // exact: "%a"
   static std::string vec(const Vec3& v);

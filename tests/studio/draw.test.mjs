@@ -1,0 +1,73 @@
+// The page draws the default scene and a scene with every vertex state: the
+// screenshot is not blank, and the colour drawn at the projected position of
+// each well-separated particle is its state's colour (thesis 4.2.6).
+import { check, openPage, run, scene, screenshot, until } from './harness.mjs';
+
+const STATE_COLOURS = [0x000000, 0x808080, 0xff0000, 0xffff00, 0x00ffff, 0x800080, 0xff8c00, 0x2e8b57, 0xff1493];
+const STATES = ['isolated', 'passive', 'lock', 'full-lock', 'simple', 'shared', 'parent', 'child', 'volatile'];
+
+// Particles at least 10 px from every other one on screen, with their
+// state, projected position and the colour drawn there.
+async function sampleStates(page) {
+  return page.evaluate(() => {
+    const t = studio.topology, pts = [];
+    for (let k = 0; k < t.count; ++k) pts.push(studio.project(t.ids[k]));
+    const out = [];
+    for (let k = 0; k < t.count; ++k) {
+      const [x, y] = pts[k];
+      if (x < 330 || x > 1000 || y < 10 || y > 740) continue;  // off the panels
+      if (pts.some((q, j) => j !== k && Math.hypot(q[0] - x, q[1] - y) < 10)) continue;
+      out.push({ id: t.ids[k], state: t.states[k], xy: [x, y], rgb: studio.pixel(x, y) });
+    }
+    return out;
+  });
+}
+
+function checkColours(samples, label) {
+  let matched = 0;
+  const seen = new Set();
+  for (const s of samples) {
+    const want = STATE_COLOURS[s.state];
+    const rgb = [(want >> 16) & 255, (want >> 8) & 255, want & 255];
+    const off = Math.max(...rgb.map((v, i) => Math.abs(v - s.rgb[i])));
+    if (off > 24) throw new Error(`${label}: particle ${s.id} (${STATES[s.state]}) at ${s.xy.map(Math.round)} is drawn ${s.rgb}, not ${rgb}`);
+    matched++;
+    seen.add(STATES[s.state]);
+  }
+  return { matched, seen: [...seen].sort() };
+}
+
+await run('draw: default scene', scene('scripts/examples/grow.lua'), ['--speed', '0'], async ({ studio, browser }) => {
+  const page = await openPage(browser, studio.url);
+  await until(page, () => studio.status && studio.status.converged && studio.frame && studio.frame.step > 6000);
+  await page.waitForTimeout(300);
+  const blank = await page.evaluate(() => {
+    const c = studio.view.renderer.domElement, g = document.createElement('canvas');
+    g.width = c.width; g.height = c.height;
+    const x = g.getContext('2d');
+    x.drawImage(c, 0, 0);
+    const d = x.getImageData(0, 0, g.width, g.height).data;
+    let ink = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] < 200 || d[i + 1] < 200 || d[i + 2] < 200) ink++;
+    return { ink, of: d.length / 4 };
+  });
+  await screenshot(page, 'studio-grow.png');
+  check(blank.ink > 2000, `the default scene is drawn: ${blank.ink} of ${blank.of} pixels not white (> 2000)`);
+  const particles = await page.evaluate(() => studio.topology.count);
+  check(particles === 128, `all 128 particles of the grown network are on the page (${particles})`);
+  const r = checkColours(await sampleStates(page), 'grow');
+  check(r.matched >= 10, `${r.matched} separated particles drawn in their state's colour (${r.seen.join(', ')})`);
+  check(page.problems.length === 0, 'no error on the page: ' + page.problems.join('; '));
+});
+
+await run('draw: every state', scene('tests/studio/states.lua'), ['--speed', '0'], async ({ studio, browser }) => {
+  const page = await openPage(browser, studio.url);
+  await until(page, () => studio.status && studio.status.converged);
+  await page.waitForTimeout(300);
+  await screenshot(page, 'studio-states.png');
+  const r = checkColours(await sampleStates(page), 'states');
+  const want = ['full-lock', 'isolated', 'lock', 'passive', 'shared', 'simple'];
+  check(want.every((s) => r.seen.includes(s)), `every thesis state is drawn in its colour: ${r.seen.join(', ')} (${r.matched} particles)`);
+  const hasSurface = await page.evaluate(() => studio.topology.triangles.length / 3);
+  check(hasSurface === 18, `the 3 x 3 patch is drawn as 18 triangles (${hasSurface})`);
+});

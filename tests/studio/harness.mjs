@@ -1,0 +1,107 @@
+// Browser tests of `tendril studio`: a real studio process and a real
+// headless Debian Chromium driven by playwright-core (web/node_modules).
+// Each test file starts its own studio on a free port and stops it with
+// SIGINT (the Ctrl-C path, which saves model.xml, model.obj, journal.txt).
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+export const root = path.resolve(here, '../..');
+const { chromium } = await import(path.join(root, 'web/node_modules/playwright-core/index.mjs'));
+
+export const tendril = process.env.TENDRIL || path.join(root, 'build/tendril');
+export const shots = process.env.TENDRIL_SCREENSHOTS || path.join(os.tmpdir(), 'tendril-studio-shots');
+
+export function scene(name) { return path.join(root, name); }
+
+// Starts `tendril studio SCENE ARGS...`; resolves once it printed its URL.
+export async function startStudio(scenePath, args = []) {
+  const out = fs.mkdtempSync(path.join(os.tmpdir(), 'tendril-studio-'));
+  const proc = spawn(tendril, ['studio', scenePath, '--port', '0', '--out', out, ...args], { stdio: ['ignore', 'pipe', 'pipe'] });
+  let log = '';
+  proc.stderr.on('data', (d) => { log += d; });
+  const url = await new Promise((resolve, reject) => {
+    let text = '';
+    const timer = setTimeout(() => reject(new Error('the studio printed no URL in 20 s:\n' + text + log)), 20000);
+    proc.stdout.on('data', (d) => {
+      text += d;
+      const m = text.match(/open (http:\/\/\S+)/);
+      if (m) { clearTimeout(timer); resolve(m[1]); }
+    });
+    proc.on('exit', (code) => reject(new Error(`the studio exited (${code}) before printing its URL:\n${text}${log}`)));
+  });
+  return {
+    url, out, proc, log: () => log,
+    alive: () => proc.exitCode === null && proc.signalCode === null,
+    // Ctrl-C: the studio saves into out/ and exits with status 0.
+    stop: () => new Promise((resolve) => {
+      if (proc.exitCode !== null) return resolve(proc.exitCode);
+      proc.on('exit', (code) => resolve(code));
+      proc.kill('SIGINT');
+    }),
+  };
+}
+
+// A fresh headless Chromium with the flags this machine needs (no network
+// beyond loopback, a new profile every time).
+export async function openBrowser() {
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'tendril-chromium-'));
+  const context = await chromium.launchPersistentContext(profile, {
+    executablePath: '/usr/bin/chromium', headless: true, viewport: { width: 1200, height: 800 },
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+           '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+  });
+  return context;
+}
+
+export async function openPage(context, url) {
+  const page = await context.newPage();
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(e.message));
+  await page.goto(url);
+  await page.waitForFunction(() => window.studio && window.studio.hello && window.studio.frame, null, { timeout: 30000 });
+  page.problems = problems;
+  return page;
+}
+
+export async function until(page, fn, arg, timeout = 30000) {
+  return (await page.waitForFunction(fn, arg, { timeout, polling: 50 })).jsonValue();
+}
+
+export async function screenshot(page, name) {
+  fs.mkdirSync(shots, { recursive: true });
+  const file = path.join(shots, name);
+  await page.screenshot({ path: file });
+  return file;
+}
+
+export function check(condition, message) {
+  if (!condition) throw new Error(message);
+  console.log('ok: ' + message);
+}
+
+// Runs a test body with a studio and a browser; always cleans up.
+export async function run(name, scenePath, args, body) {
+  const studio = await startStudio(scenePath, args);
+  const browser = await openBrowser();
+  let failed = null;
+  try {
+    await body({ studio, browser });
+  } catch (e) {
+    failed = e;
+  }
+  await browser.close().catch(() => {});
+  const code = await studio.stop();
+  if (failed) {
+    console.error(`${name}: FAILED: ${failed.stack || failed}\n--- studio stderr ---\n${studio.log()}`);
+    process.exit(1);
+  }
+  if (code !== 0) {
+    console.error(`${name}: the studio exited with ${code} on Ctrl-C\n${studio.log()}`);
+    process.exit(1);
+  }
+  console.log(`${name}: passed`);
+}

@@ -1,0 +1,124 @@
+// Interaction with the default scene while it runs: a mouse drag moves a
+// particle on the server and the model relaxes around it; rule 13 applied
+// from the palette adds a particle; a refused rule shows its reason; the
+// timeline shows an earlier model; the session's journal, saved by Ctrl-C,
+// replays with `tendril replay` to the same model database, byte for byte.
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { check, openPage, run, scene, screenshot, tendril, until } from './harness.mjs';
+
+// A free (unlocked) particle of the given state at least 14 px from all others on screen,
+// inside the drawing (not under a panel).
+async function lonely(page, wantState, exclude = []) {
+  return page.evaluate(([want, exclude]) => {
+    const t = studio.topology, pts = [];
+    for (let k = 0; k < t.count; ++k) pts.push(studio.project(t.ids[k]));
+    for (let k = 0; k < t.count; ++k) {
+      const [x, y] = pts[k];
+      if (t.states[k] !== want || t.locks[k] || exclude.includes(t.ids[k]) || x < 360 || x > 930 || y < 120 || y > 700) continue;
+      if (pts.some((q, j) => j !== k && Math.hypot(q[0] - x, q[1] - y) < 14)) continue;
+      return { id: t.ids[k], x, y };
+    }
+    return null;
+  }, [wantState, exclude]);
+}
+
+const CHILD = 7;
+const dist = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+
+await run('interact', scene('scripts/examples/grow.lua'), ['--speed', '0'], async ({ studio, browser }) => {
+  const page = await openPage(browser, studio.url);
+  await until(page, () => studio.status && studio.status.converged && studio.frame.step > 6000);
+
+  // --- drag -------------------------------------------------------------------------
+  const p = await lonely(page, CHILD);
+  check(p !== null, `a child particle to drag: ${JSON.stringify(p)}`);
+  const before = await page.evaluate((id) => studio.position(id), p.id);
+  const others = await page.evaluate(() => Array.from(studio.frame.positions));
+  await page.mouse.move(p.x, p.y);
+  await page.mouse.down();
+  for (let k = 1; k <= 10; ++k) await page.mouse.move(p.x, p.y - 8 * k);
+  await page.waitForTimeout(1500);
+  const held = await page.evaluate((id) => studio.position(id), p.id);
+  const moved = dist(before, held);
+  const around = await page.evaluate((was) => {
+    let n = 0;
+    const now = studio.frame.positions;
+    for (let k = 0; k < now.length; k += 3) if (Math.hypot(now[k] - was[k], now[k + 1] - was[k + 1], now[k + 2] - was[k + 2]) > 1e-3) n++;
+    return n;
+  }, others);
+  await screenshot(page, 'studio-drag.png');
+  await page.mouse.up();
+  await until(page, () => studio.replies.some((r) => r.cmd === 'release'));
+  check(moved > 0.05, `the dragged particle moved ${moved.toFixed(3)} m on the server (> 0.05 m)`);
+  check(around > 5, `${around} other particles moved with it (> 5): the model relaxes around the drag`);
+  const latency = await page.evaluate(() => studio.dragLatency);
+  check(latency.length >= 1, `drag-to-frame latency measured: ${latency.map((x) => x.toFixed(1)).join(', ')} ms`);
+  await until(page, () => studio.status.converged && studio.frame.residual < 1e-3);
+  const residual = await page.evaluate(() => studio.frame.residual);
+  check(residual < 1e-3, `released, the model relaxed back to equilibrium (residual ${residual.toExponential(2)} N < 1e-3)`);
+
+  // --- rule 13 from the palette --------------------------------------------------------------
+  const pair = await page.evaluate(() => {
+    const t = studio.topology, pts = [];
+    for (let k = 0; k < t.count; ++k) pts.push(studio.project(t.ids[k]));
+    const free = (k) => pts[k][0] > 360 && pts[k][0] < 930 && pts[k][1] > 120 && pts[k][1] < 700 &&
+      !pts.some((q, j) => j !== k && Math.hypot(q[0] - pts[k][0], q[1] - pts[k][1]) < 14);
+    for (let e = 0; e < t.edgeKind.length; ++e) {
+      const a = t.edges[2 * e], b = t.edges[2 * e + 1];
+      if (t.edgeKind[e] === 1 && free(a) && free(b)) return [{ id: t.ids[a], x: pts[a][0], y: pts[a][1] }, { id: t.ids[b], x: pts[b][0], y: pts[b][1] }];
+    }
+    return null;
+  });
+  check(pair !== null, `two consecutive beam particles to pick: ${pair && pair.map((q) => q.id)}`);
+  await page.mouse.click(pair[0].x, pair[0].y);
+  await page.keyboard.down('Shift');
+  await page.mouse.click(pair[1].x, pair[1].y);
+  await page.keyboard.up('Shift');
+  const selected = await page.evaluate(() => studio.selection.map((s) => s.id));
+  check(selected.join() === pair.map((q) => q.id).join(), `both are selected by clicking: ${selected}`);
+  const count0 = await page.evaluate(() => studio.topology.count);
+  await page.click('div[data-rule="insert"] .rule-name');
+  await page.click('div[data-rule="insert"] .apply');
+  const reply = await until(page, () => studio.replies.find((r) => r.cmd === 'rule'));
+  check(reply.ok, `rule 13 applied from the palette: ${JSON.stringify(reply.value || reply.message)}`);
+  await until(page, (n) => studio.topology.count === n + 1, count0);
+  check(true, `the model has one particle more (${count0} -> ${count0 + 1})`);
+
+  // --- a refused rule shows why ----------------------------------------------------------------
+  const q = await lonely(page, CHILD, [p.id]);
+  await page.mouse.click(q.x, q.y);
+  await page.click('div[data-rule="delete_particle"] .rule-name');
+  await page.click('div[data-rule="delete_particle"] .apply');
+  await until(page, () => document.getElementById('message').className === 'refused');
+  const why = await page.textContent('#message');
+  check(/not applicable: particle \d+ is child/.test(why), `rule 2 on a child particle is refused, and the page says why: "${why}"`);
+  await screenshot(page, 'studio-refused.png');
+
+  // --- timeline --------------------------------------------------------------------------------
+  const live = await page.evaluate(() => studio.topology.count);
+  await page.evaluate(() => {
+    const s = document.getElementById('scrub');
+    s.value = 40;
+    s.dispatchEvent(new Event('input'));
+  });
+  await until(page, () => studio.preview && studio.preview.frame);
+  const earlier = await page.evaluate(() => ({ n: studio.preview.topology.count, label: document.getElementById('scrub-label').textContent }));
+  await page.waitForTimeout(200);
+  await screenshot(page, 'studio-timeline.png');
+  check(earlier.n > 0 && earlier.n < live, `the timeline shows an earlier model: ${earlier.label}, ${earlier.n} particles (live: ${live})`);
+  await page.click('#live');
+
+  // --- the session's journal replays to the same model ----------------------------------------
+  await page.click('#pause');
+  await until(page, () => studio.status && studio.status.paused);
+  const code = await studio.stop();
+  check(code === 0, `Ctrl-C stops the studio cleanly (exit ${code})`);
+  const replayed = path.join(studio.out, 'replayed');
+  execFileSync(tendril, ['replay', path.join(studio.out, 'journal.txt'), '--out', replayed]);
+  const a = fs.readFileSync(path.join(studio.out, 'model.xml'), 'utf8'), b = fs.readFileSync(path.join(replayed, 'model.xml'), 'utf8');
+  const journal = fs.readFileSync(path.join(studio.out, 'journal.txt'), 'utf8');
+  check(/^goal anchor /m.test(journal) && /^insert /m.test(journal), 'the journal holds the drag (goal anchor) and rule 13 (insert)');
+  check(a === b, `tendril replay of the session's journal gives the same model.xml, byte for byte (${a.length} bytes)`);
+});
