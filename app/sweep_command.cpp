@@ -1,68 +1,38 @@
-// tendril sweep: a scene run for every combination of parameter values and
-// seeds, across N processes; one CSV row per run, each run's outputs (model,
-// journal, summary) in its own folder. A failing run is a row with its error.
-#include <spawn.h>
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
+// `tendril sweep`: a scene run for every combination of parameter values and
+// seeds. The plan (DIR/plan.csv) is written once; each run gets its folder
+// and a `done` marker last, so a sweep resumes where it stopped; the runs go
+// to local processes or to one Slurm job array, and both end in the same
+// DIR/sweep.csv and DIR/summary.md (docs/agents.md).
 #include <algorithm>
 #include <charconv>
-#include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
-#include <map>
 #include <memory>
-#include <set>
-#include <sstream>
-#include <string>
-#include <vector>
 
 #include "command.hpp"
-#include "io/csv.hpp"
+#include "io/atomic_file.hpp"
 #include "scene_declarations.hpp"
-
-extern char** environ;
+#include "sweep/local.hpp"
+#include "sweep/slurm.hpp"
+#include "sweep/supervisor.hpp"
 
 namespace tendril::app {
 
 namespace {
 
-struct Run {
-  std::vector<std::pair<std::string, std::string>> params;
-  long long seed = 0;
-  std::string dir;
-  int status = -1;
-  double seconds = 0;
-  std::string error;
-  std::map<std::string, std::string> summary;
+namespace fs = std::filesystem;
+using namespace tendril::sweep;
+
+struct SweepArguments {
+  std::string scene, out = "sweep", plan_dir, gather_dir, seeds;
+  std::vector<std::string> params;
+  std::int64_t jobs = 1, steps = -1, task = 0, array_max = 0;
+  bool resume = false, slurm = false, no_wait = false;
+  SlurmOptions slurm_options;
 };
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, sep);) out.push_back(item);
-  return out;
-}
-
-std::string last_line(const std::string& path) {
-  std::ifstream in(path);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (!line.empty()) last = line;
-  return last;
-}
-
-void read_summary(Run& r) {
-  std::ifstream in(r.dir + "/summary.csv");
-  const auto rows = tendril::parse_csv(std::string(std::istreambuf_iterator<char>(in), {}));
-  if (rows.size() < 2) return;
-  for (std::size_t k = 0; k < rows[0].size() && k < rows[1].size(); ++k) r.summary[rows[0][k]] = rows[1][k];
-}
+std::string self() { return fs::read_symlink("/proc/self/exe").string(); }
 
 std::int64_t whole_number(const std::string& text, const std::string& what) {
   std::int64_t v = 0;
@@ -72,24 +42,29 @@ std::int64_t whole_number(const std::string& text, const std::string& what) {
   return v;
 }
 
-struct SweepArguments {
-  std::string scene, out = "sweep", seeds;
-  std::vector<std::string> params;
-  std::int64_t jobs = 1, steps = -1;
-};
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  for (std::size_t k; (k = s.find(sep, start)) != std::string::npos; start = k + 1) out.push_back(s.substr(start, k - start));
+  out.push_back(s.substr(start));
+  return out;
+}
 
-int run_sweep(const SweepArguments& a) {
-  const std::string& scene = a.scene;
-  const std::string& out = a.out;
+// The plan the command line describes; its parameters checked against the
+// scene's declarations.
+Plan plan_of(const SweepArguments& a) {
   if (a.params.empty() && a.seeds.empty())
     throw UsageError("nothing to sweep: give --param NAME=V1,V2,... or --seeds A..B (or both)");
-  std::vector<std::pair<std::string, std::vector<std::string>>> params;
+  ParamValues params;
   std::vector<std::string> names;
   for (const std::string& p : a.params) {
     auto [name, values] = split_param(p);
     if (values.empty()) throw UsageError("--param " + name + " needs values: " + name + "=V1,V2,...");
     if (std::find(names.begin(), names.end(), name) != names.end())
       throw UsageError("--param " + name + " is given twice");
+    const auto& reserved = plan_columns();
+    if (std::find(reserved.begin(), reserved.end(), name) != reserved.end() || name == "status" || name == "error")
+      throw UsageError("--param " + name + ": a sweep's own column has that name; rename the parameter");
     names.push_back(name);
     params.push_back({name, split(values, ',')});
   }
@@ -100,124 +75,155 @@ int run_sweep(const SweepArguments& a) {
     last = dots == std::string::npos ? first : whole_number(a.seeds.substr(dots + 2), "--seeds");
     if (last < first) throw UsageError("--seeds " + a.seeds + ": the first seed is after the last");
   }
-  check_declared(scene, names);
-  const std::string steps = a.steps >= 0 ? std::to_string(a.steps) : "";
-  const std::int64_t jobs = a.jobs;
+  check_declared(a.scene, names);
+  return make_plan(fs::absolute(a.scene).lexically_normal().string(), fs::current_path().string(), a.steps, params,
+                   first, last);
+}
 
-  // Every combination, parameters in the order given, then seeds.
-  std::vector<Run> runs(1);
-  for (const auto& [name, values] : params) {
-    std::vector<Run> next;
-    for (const Run& r : runs)
-      for (const std::string& v : values) {
-        Run copy = r;
-        copy.params.push_back({name, v});
-        next.push_back(copy);
-      }
-    runs = next;
+// What differs between the plan in DIR and this command's.
+std::string difference(const Plan& there, const Plan& here) {
+  if (there.scene != here.scene) return "its scene is " + there.scene + ", this command's " + here.scene;
+  if (there.workdir != here.workdir) return "it runs in " + there.workdir + ", this command in " + here.workdir;
+  if (there.steps != here.steps) return "its --steps differ";
+  if (there.params != here.params) return "its parameters differ";
+  if (there.runs.size() != here.runs.size())
+    return "it has " + std::to_string(there.runs.size()) + " runs, this command " + std::to_string(here.runs.size());
+  return "its values or seeds differ";
+}
+
+bool has_plan(const std::string& dir) {
+  std::error_code ec;
+  return fs::exists(plan_path(dir), ec);
+}
+
+// The plan of DIR: the one the command line describes (written there if DIR
+// has none), or DIR's own when no scene is given.
+Plan settle_plan(const SweepArguments& a, const std::string& dir) {
+  if (a.scene.empty()) {
+    if (!has_plan(dir)) throw UsageError(dir + " holds no sweep plan: give the scene, --param and --seeds");
+    return read_plan(dir);
   }
-  std::vector<Run> all;
-  for (const Run& r : runs)
-    for (long long s = first; s <= last; ++s) {
-      Run copy = r;
-      copy.seed = s;
-      copy.dir = out + "/run-" + std::to_string(all.size() + 1);
-      all.push_back(copy);
+  Plan plan = plan_of(a);
+  if (has_plan(dir)) {
+    const Plan there = read_plan(dir);
+    if (!(there == plan))
+      throw UsageError(plan_path(dir) + " is the plan of another sweep (" + difference(there, plan) +
+                       "): give another --out, or remove it");
+  } else {
+    fs::create_directories(dir);
+    write_file_atomically(plan_path(dir), plan_csv(plan));
+  }
+  return plan;
+}
+
+int plan_only(const SweepArguments& a) {
+  const Plan plan = settle_plan(a, a.plan_dir);
+  std::printf("%zu runs planned in %s; `tendril sweep --out %s` (with --jobs N or --slurm) runs them\n",
+              plan.runs.size(), plan_path(a.plan_dir).c_str(), a.plan_dir.c_str());
+  return kOk;
+}
+
+int one_task(const SweepArguments& a) {
+  if (!a.scene.empty() || !a.params.empty() || !a.seeds.empty())
+    throw UsageError("--task runs a run of a planned sweep: give only --out DIR, whose plan.csv says the rest");
+  const Plan plan = read_plan(a.out);
+  if (a.task < 1 || a.task > std::int64_t(plan.runs.size()))
+    throw UsageError("--task " + std::to_string(a.task) + ": the plan has runs 1 to " + std::to_string(plan.runs.size()));
+  Supervisor supervisor(self(), plan, a.out);
+  Outcome outcome;
+  supervisor.run({int(a.task)}, 1, [&](const PlannedRun&, const Outcome& o) { outcome = o; }, {});
+  if (supervisor.stop_signal()) die_of(supervisor.stop_signal());
+  if (!outcome.error.empty()) std::fprintf(stderr, "tendril sweep: run %lld: %s\n", static_cast<long long>(a.task),
+                                           outcome.error.c_str());
+  return outcome.kind == Outcome::kOk ? kOk : kSceneError;
+}
+
+int gather_only(const SweepArguments& a) {
+  if (!a.scene.empty() || !a.params.empty() || !a.seeds.empty())
+    throw UsageError("--gather collects a planned sweep: give only its folder, whose plan.csv says the rest");
+  const std::string& dir = a.gather_dir;
+  const Plan plan = read_plan(dir);
+  const std::string job = submitted_job(dir);
+  Gathered g(plan, dir, job.empty() ? std::map<int, std::string>{} : queue_states(job));
+  return finish_sweep(plan, g, dir);
+}
+
+int sweep(const SweepArguments& a) {
+  if (!a.plan_dir.empty()) return plan_only(a);
+  if (!a.gather_dir.empty()) return gather_only(a);
+  if (a.task) return one_task(a);
+  const std::string& dir = a.out;
+  const Plan plan = settle_plan(a, dir);
+  Gathered g(plan, dir);
+  std::vector<int> todo;
+  int finished = 0;
+  for (const PlannedRun& r : plan.runs) {
+    if (g.runs()[std::size_t(r.index - 1)].outcome.finished()) ++finished;
+    else todo.push_back(r.index);
+  }
+  if (finished && !a.resume)
+    throw UsageError(dir + " holds " + std::to_string(finished) + " finished runs of this sweep: --resume continues it, "
+                     "or give another --out");
+  if (a.resume && !todo.empty())
+    std::fprintf(stderr, "[tendril] sweep: resuming %s: %d of %zu runs finished, %zu to run\n", dir.c_str(), finished,
+                 plan.runs.size(), todo.size());
+  if (a.slurm && !todo.empty()) {
+    const std::string job = submit(self(), plan, dir, todo, a.slurm_options);
+    std::fprintf(stderr, "[tendril] sweep: submitted Slurm job %s: %zu tasks (%s/slurm/array.sh)\n", job.c_str(),
+                 todo.size(), dir.c_str());
+    if (a.no_wait) {
+      std::printf("%s\n", job.c_str());
+      std::fprintf(stderr, "[tendril] sweep: `tendril sweep --gather %s` collects the runs once the job is done\n",
+                   dir.c_str());
+      return kOk;
     }
-
-  std::filesystem::create_directories(out);
-  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-  std::map<pid_t, std::pair<std::size_t, std::chrono::steady_clock::time_point>> running;
-  std::size_t next = 0, done = 0;
-  while (done < all.size()) {
-    while (running.size() < std::size_t(jobs) && next < all.size()) {
-      Run& r = all[next];
-      std::filesystem::create_directories(r.dir);
-      std::vector<std::string> args{self, "run", scene, "--out", r.dir, "--seed", std::to_string(r.seed), "--quiet"};
-      for (const auto& [name, v] : r.params) args.insert(args.end(), {"--param", name + "=" + v});
-      if (!steps.empty()) args.insert(args.end(), {"--steps", steps});
-      std::vector<char*> cargs;
-      for (std::string& a : args) cargs.push_back(a.data());
-      cargs.push_back(nullptr);
-      posix_spawn_file_actions_t files;
-      posix_spawn_file_actions_init(&files);
-      posix_spawn_file_actions_addopen(&files, 1, (r.dir + "/stdout.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      posix_spawn_file_actions_addopen(&files, 2, (r.dir + "/stderr.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      pid_t pid = 0;
-      if (int err = posix_spawn(&pid, self.c_str(), &files, nullptr, cargs.data(), environ); err != 0) {
-        r.error = std::string("could not start ") + self + ": " + std::strerror(err);
-        ++done;
-      } else {
-        running[pid] = {next, std::chrono::steady_clock::now()};
-      }
-      posix_spawn_file_actions_destroy(&files);
-      ++next;
-    }
-    if (running.empty()) continue;
-    int status = 0;
-    pid_t pid = waitpid(-1, &status, 0);
-    auto it = running.find(pid);
-    if (it == running.end()) continue;
-    Run& r = all[it->second.first];
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - it->second.second).count();
-    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    if (r.status != 0) r.error = last_line(r.dir + "/stderr.txt");
-    read_summary(r);
-    running.erase(it);
-    ++done;
-    std::fprintf(stderr, "[tendril] sweep: %zu/%zu runs done\n", done, all.size());
+    wait_for(job, plan, dir, g);
+  } else if (!todo.empty()) {
+    run_local(self(), plan, dir, todo, int(a.jobs), g);
   }
-
-  std::set<std::string> keys;
-  for (const Run& r : all)
-    for (const auto& [k, v] : r.summary) keys.insert(k);
-  std::ofstream csv(out + "/sweep.csv");
-  csv << "run";
-  std::vector<std::string> header{"run"};
-  for (const auto& [name, values] : params) header.push_back(name);
-  header.insert(header.end(), {"seed", "status", "wall_time_s"});
-  header.insert(header.end(), keys.begin(), keys.end());
-  header.push_back("error");
-  csv << tendril::csv_line(header) << "\n";
-  int failed = 0;
-  for (std::size_t n = 0; n < all.size(); ++n) {
-    const Run& r = all[n];
-    std::vector<std::string> row{std::to_string(n + 1)};
-    for (const auto& [name, v] : r.params) row.push_back(v);
-    char secs[32];
-    std::snprintf(secs, sizeof secs, "%.3f", r.seconds);
-    row.insert(row.end(), {std::to_string(r.seed), r.status == 0 ? "ok" : "failed", secs});
-    for (const std::string& k : keys) row.push_back(r.summary.count(k) ? r.summary.at(k) : "");
-    row.push_back(r.error);
-    csv << tendril::csv_line(row) << "\n";
-    failed += r.status != 0;
-  }
-  csv.close();
-  std::ifstream back(out + "/sweep.csv");
-  std::printf("%s", std::string(std::istreambuf_iterator<char>(back), {}).c_str());
-  std::fprintf(stderr, "[tendril] sweep: %zu runs, %d failed -> %s/sweep.csv\n", all.size(), failed, out.c_str());
-  return failed ? kSceneError : kOk;
+  return finish_sweep(plan, g, dir);
 }
 
 }  // namespace
 
 Command sweep_command() {
-  return {"sweep", "runs a scene for every combination of parameters and seeds; one CSV row per run",
+  return {"sweep", "runs a scene for every combination of parameters and seeds, here or on a Slurm cluster",
           [](CLI::App& cli) {
             auto a = std::make_shared<SweepArguments>();
             constexpr auto kMax = std::numeric_limits<std::int64_t>::max();
-            add_scene(cli, a->scene);
+            cli.add_option("scene", a->scene, "the Lua scene (docs/lua-api.md); not needed when DIR has a plan")
+                ->check(CLI::ExistingPath)
+                ->type_name("SCENE.lua");
             cli.add_option("--param", a->params, "values of tendril.param(NAME, default) to sweep (repeatable)")
                 ->type_name("NAME=V1,V2,...")
                 ->expected(1)
                 ->take_all();
             cli.add_option("--seeds", a->seeds, "the seeds of every combination, A to B")->type_name("A..B");
-            add_integer(cli, "--jobs", a->jobs, 1, 4096, "runs at once")->capture_default_str();
-            cli.add_option("--out", a->out, "the sweep's folder: sweep.csv and a folder per run")
+            add_integer(cli, "--steps", a->steps, 0, kMax, "caps the steps of every run{} and step() of each run");
+            cli.add_option("--out", a->out, "the sweep's folder: plan.csv, run-K/, sweep.csv, summary.md")
                 ->type_name("DIR")
                 ->capture_default_str();
-            add_integer(cli, "--steps", a->steps, 0, kMax, "caps the steps of every run{} and step() of each run");
-            return [a] { return run_sweep(*a); };
+            auto* plan = cli.add_option("--plan", a->plan_dir, "only writes the plan, DIR/plan.csv")->type_name("DIR");
+            auto* resume = cli.add_flag("--resume", a->resume, "continues the sweep in --out: finished runs are kept");
+            add_integer(cli, "--jobs", a->jobs, 1, 4096, "runs at once on this machine")->capture_default_str();
+            auto* slurm = cli.add_flag("--slurm", a->slurm, "submits the runs as one Slurm job array (sbatch)");
+            cli.add_option("--partition", a->slurm_options.partition, "sbatch --partition")->needs(slurm);
+            cli.add_option("--time", a->slurm_options.time, "sbatch --time, per run (e.g. 30:00)")->needs(slurm);
+            add_integer(cli, "--array-max", a->array_max, 1, 1'000'000, "at most N tasks at once (--array=...%N)")
+                ->needs(slurm);
+            cli.add_flag("--no-wait", a->no_wait, "returns once submitted; --gather collects")->needs(slurm);
+            auto* task = add_integer(cli, "--task", a->task, 1, kMax,
+                                     "runs run K of --out's plan (what a Slurm array task calls)");
+            auto* gather = cli.add_option("--gather", a->gather_dir, "collects DIR's runs into sweep.csv and summary.md")
+                               ->type_name("DIR");
+            for (CLI::Option* mode : {plan, task, gather})
+              for (CLI::Option* other : {resume, slurm}) mode->excludes(other);
+            plan->excludes(task)->excludes(gather);
+            task->excludes(gather);
+            return [a] {
+              a->slurm_options.array_max = int(a->array_max);
+              return sweep(*a);
+            };
           }};
 }
 

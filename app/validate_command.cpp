@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "io/gnuplot.hpp"
 #include "registry.hpp"
 #include "report.hpp"
 #include "runner.hpp"

@@ -2,12 +2,15 @@
 # Builds the benchmarks (Release, in ./build) and runs them, printing tables.
 #
 #   bench/run.sh [throughput|rule_cost|meshing|constraint_solvers] [options...]
+#   bench/run.sh sweep [RUNS]
 #
 # Without a selector every benchmark runs and the options go to the first two
 # (e.g. --sizes 10K,100K); with one, only that benchmark runs and gets the
 # options (e.g. `bench/run.sh rule_cost --apps 50`). See each binary's --help.
 # The meshing benchmark compares paving with Debian's gmsh, installed here
 # with apt-get when it is missing (benchmarks only: CI does not need it).
+# `sweep` (only when asked for) measures a sweep's overhead per run, locally
+# and on a one-node Slurm cluster it starts (bench/sweep.sh; needs root).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -15,8 +18,13 @@ build="$root/build"
 cd "$root"
 
 benches=(throughput rule_cost meshing constraint_solvers)
-selected=0
+selected=0 sweep=0
 case "${1:-}" in
+  sweep)
+    benches=()
+    sweep=1
+    shift
+    ;;
   throughput | rule_cost | meshing | constraint_solvers)
     benches=("$1")
     selected=1
@@ -40,6 +48,10 @@ if [[ ! -f "$build/CMakeCache.txt" ]] && command -v ninja >/dev/null; then
   generator=(-G Ninja)
 fi
 cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release >/dev/null
+if ((sweep)); then
+  cmake --build "$build" --target tendril
+  exec bash "$root/bench/sweep.sh" "$build/tendril" "$@"
+fi
 targets=()
 for b in "${benches[@]}"; do targets+=("bench_$b"); done
 cmake --build "$build" --target "${targets[@]}"

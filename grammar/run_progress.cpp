@@ -8,7 +8,6 @@ namespace tendril::lua {
 
 namespace {
 
-
 std::string format(const char* fmt, auto... args) {
   char buf[256];
   std::snprintf(buf, sizeof buf, fmt, args...);
@@ -17,14 +16,6 @@ std::string format(const char* fmt, auto... args) {
 
 }  // namespace
 
-std::string duration_text(double seconds) {
-  if (!(seconds >= 0) || !std::isfinite(seconds)) return "?";
-  if (seconds < 60) return format("%.1f s", seconds);
-  const auto s = static_cast<long long>(std::llround(seconds));
-  if (s < 3600) return format("%lld min %02lld s", s / 60, s % 60);
-  return format("%lld h %02lld min", s / 3600, (s % 3600) / 60);
-}
-
 ProgressStyle::ProgressStyle()
     : terminal(isatty(fileno(stderr)) != 0), every(terminal ? std::chrono::milliseconds(200) : std::chrono::seconds(10)) {}
 
@@ -32,6 +23,7 @@ RunProgress::RunProgress(bool enabled, double tolerance, std::uint64_t cap, bool
                          ProgressStyle style)
     : enabled_(enabled),
       style_(style),
+      line_(style.out, style.terminal),
       tolerance_(tolerance),
       cap_(cap),
       capped_by_option_(capped_by_option),
@@ -58,15 +50,7 @@ void RunProgress::update(const RunResult& r, std::uint64_t total_steps, std::siz
   // Steps left over the rate bounds the time left: the run may converge sooner.
   if (cap_ != UINT64_MAX && rate_ > 0)
     line += "  at most " + duration_text(double(cap_ - r.steps) / rate_) + " left";
-  if (style_.terminal) std::fprintf(style_.out, "\r%s\033[K", line.c_str());
-  else std::fprintf(style_.out, "%s\n", line.c_str());
-  std::fflush(style_.out);
-  shown_ = true;
-}
-
-RunProgress::~RunProgress() {
-  // A run that threw leaves the terminal's line to the error message.
-  if (shown_ && style_.terminal && !finished_) std::fputc('\n', style_.out);
+  line_.show(line);
 }
 
 std::string RunProgress::finish(const RunResult& r) {
@@ -86,12 +70,7 @@ std::string RunProgress::finish(const RunResult& r) {
     why = format("not converged: %s %llu reached (%s) with residual %.2e N, tolerance %.1e",
                  capped_by_option_ ? "--steps" : "max_steps", steps, duration_text(elapsed).c_str(), r.residual,
                  tolerance_);
-  finished_ = true;
-  if (shown_) {
-    if (style_.terminal) std::fprintf(style_.out, "\r\033[K");
-    std::fprintf(style_.out, "[tendril] %s\n", why.c_str());
-    std::fflush(style_.out);
-  }
+  if (line_.shown()) line_.end("[tendril] " + why);
   return why;
 }
 

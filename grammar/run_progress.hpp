@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "io/status_line.hpp"
 #include "physics/solver.hpp"
 
 namespace tendril::lua {
@@ -25,9 +26,6 @@ class RunProgress {
   // cap: the run's step limit; capped_by_option: it comes from --steps.
   RunProgress(bool enabled, double tolerance, std::uint64_t cap, bool capped_by_option,
               ProgressStyle style = ProgressStyle());
-  ~RunProgress();
-  RunProgress(const RunProgress&) = delete;
-  RunProgress& operator=(const RunProgress&) = delete;
   // Cheap enough to call every step; draws at most every style.every.
   // total_steps: the solver's count since the model began.
   void update(const RunResult& r, std::uint64_t total_steps, std::size_t particles);
@@ -38,16 +36,13 @@ class RunProgress {
  private:
   bool enabled_;
   ProgressStyle style_;
+  StatusLine line_;
   double tolerance_;
   std::uint64_t cap_;
   bool capped_by_option_;
   std::chrono::steady_clock::time_point start_, last_;
-  bool shown_ = false, finished_ = false;
   std::uint64_t last_steps_ = 0;
   double rate_ = 0;  // steps per second, smoothed
 };
-
-// "1.5 s", "3 min 12 s", "2 h 05 min".
-std::string duration_text(double seconds);
 
 }  // namespace tendril::lua

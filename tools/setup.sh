@@ -6,7 +6,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 packages=(cmake g++ ninja-build pkg-config libeigen3-dev liblua5.4-dev lua5.4
           libcgal-dev libtinyxml2-dev libopenmesh-dev doctest-dev gnuplot-nox
-          libcivetweb-dev nlohmann-json3-dev chromium libcli11-dev)
+          libcivetweb-dev nlohmann-json3-dev chromium libcli11-dev
+          slurm-wlm munge)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -10,28 +10,13 @@
 
 #include "io/atomic_file.hpp"
 #include "io/csv.hpp"
+#include "io/gnuplot.hpp"
 
 namespace tendril::validate {
 
 namespace {
 
 int width_of(const std::string& s) { return static_cast<int>(s.size()); }
-
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return q + "'";
-}
-
-// A double-quoted gnuplot string (where \n is a line break).
-std::string gnuplot_quote(const std::string& s) {
-  std::string q = "\"";
-  for (char ch : s) {
-    if (ch == '"' || ch == '\\') q += '\\';
-    q += ch == '\n' ? std::string("\\n") : std::string(1, ch);
-  }
-  return q + "\"";
-}
 
 // Breaks text at spaces into lines of about equal length, none much over
 // `width` characters.
@@ -127,8 +112,6 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
   write_file_atomically(path, f.str());
 }
 
-bool gnuplot_available() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
-
 std::string plot(const Case& c, const std::vector<Row>& rows, const std::string& dir) {
   // Series in table order; failed rows have nothing to plot. An exact zero
   // error has no place on a log axis: it is drawn at a floor (the script says).
@@ -213,17 +196,15 @@ std::string plot(const Case& c, const std::vector<Row>& rows, const std::string&
   // gnuplot draws into a temporary name; the picture replaces the old one
   // only when it is complete.
   const std::string temp_png = "." + png + ".tmp";
-  const std::string command = "cd " + shell_quote(dir) + " && gnuplot -e " + shell_quote("out='" + temp_png + "'") +
-                              " " + shell_quote(gp) + " 2>" + shell_quote(c.name + ".gnuplot.log");
-  if (std::system(command.c_str()) != 0) {
+  if (const std::string failed = run_gnuplot(dir, gp, "out='" + temp_png + "'", c.name + ".gnuplot.log");
+      !failed.empty()) {
     std::remove((dir + "/" + temp_png).c_str());
-    return "gnuplot failed on " + dir + "/" + gp + " (see " + dir + "/" + c.name + ".gnuplot.log)";
+    return failed;
   }
   if (std::rename((dir + "/" + temp_png).c_str(), (dir + "/" + png).c_str()) != 0) {
     std::remove((dir + "/" + temp_png).c_str());
     return "cannot move " + dir + "/" + temp_png + " to " + png;
   }
-  std::remove((dir + "/" + c.name + ".gnuplot.log").c_str());
   return "";
 }
 

@@ -29,7 +29,6 @@ std::string note(const Row& r);
 // Written whole or not at all; throws OutputError if it cannot be (io/atomic_file.hpp).
 void write_csv(const std::string& path, const std::vector<Row>& rows);
 
-bool gnuplot_available();
 // Writes DIR/NAME.dat and DIR/NAME.gp (relative paths: rerun with
 // `cd DIR && gnuplot NAME.gp`) and runs gnuplot for DIR/NAME.png, log-log
 // error against wall time, a series per integrator (and formulation).

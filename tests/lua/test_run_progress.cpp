@@ -48,10 +48,10 @@ std::size_t count(const std::string& s, const std::string& what) {
 }  // namespace
 
 TEST_CASE("progress: durations read as seconds, minutes or hours") {
-  CHECK(lua::duration_text(1.46) == "1.5 s");
-  CHECK(lua::duration_text(75) == "1 min 15 s");
-  CHECK(lua::duration_text(2 * 3600 + 5 * 60 + 10) == "2 h 05 min");
-  CHECK(lua::duration_text(-1) == "?");
+  CHECK(duration_text(1.46) == "1.5 s");
+  CHECK(duration_text(75) == "1 min 15 s");
+  CHECK(duration_text(2 * 3600 + 5 * 60 + 10) == "2 h 05 min");
+  CHECK(duration_text(-1) == "?");
 }
 
 TEST_CASE("progress: on a terminal one line is rewritten in place, then replaced by the final line") {
