@@ -31,16 +31,22 @@ left_in() {
 
 count() { find "$1" -mindepth 2 -maxdepth 2 -name "$2" 2>/dev/null | wc -l; }
 
+# Waits until N run folders of DIR hold FILE, at most SECONDS.
+await() {
+  local dir=$1 file=$2 n=$3 seconds=$4 waited=0
+  until [ "$(count "$dir" "$file")" -ge "$n" ]; do
+    sleep 0.05; waited=$((waited + 1))
+    [ $waited -lt $((20 * seconds)) ] || fail "not $n runs of $dir with $file within $seconds s"
+  done
+}
+
 kill_resume() {
   local args=(sweep "$scene" --param segments=12,24 --seeds 1..4 --param hold=0.15 --jobs 2)
   rm -rf whole killed
   "$tendril" "${args[@]}" --out whole >/dev/null 2>whole.stderr || fail "the uninterrupted sweep failed: $(cat whole.stderr)"
   "$tendril" "${args[@]}" --out killed >/dev/null 2>killed.stderr &
-  local pid=$! waited=0
-  until [ "$(count killed done)" -ge 3 ]; do
-    sleep 0.05; waited=$((waited + 1))
-    [ $waited -lt 1200 ] || fail "no three runs done within 60 s"
-  done
+  local pid=$!
+  await killed done 3 60
   kill -KILL $pid
   wait $pid 2>/dev/null
   local done_before; done_before=$(count killed done)
@@ -85,11 +91,8 @@ signal() {
   rm -rf signalled
   touch hold
   "$tendril" sweep "$scene" --param hold_while="$work/hold" --seeds 1..4 --jobs 2 --out signalled >/dev/null 2>signal.stderr &
-  local pid=$! waited=0
-  until [ "$(count signalled summary.csv)" -ge 2 ]; do
-    sleep 0.05; waited=$((waited + 1))
-    [ $waited -lt 600 ] || fail "two runs did not start within 30 s"
-  done
+  local pid=$!
+  await signalled summary.csv 2 30
   kill -TERM $pid
   wait $pid; local status=$?
   rm -f hold
