@@ -59,6 +59,7 @@ MpiDefault=none
 SelectType=select/cons_tres
 SelectTypeParameters=CR_Core
 SchedulerType=sched/backfill
+# Launch array tasks as soon as cores free up (batch_sched_delay is 3 s by default).
 SchedulerParameters=batch_sched_delay=0,sched_min_interval=0,default_queue_depth=1000
 ReturnToService=2
 JobAcctGatherType=jobacct_gather/none
