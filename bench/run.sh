@@ -3,6 +3,7 @@
 #
 #   bench/run.sh [throughput|rule_cost|meshing|constraint_solvers] [options...]
 #   bench/run.sh sweep [RUNS]
+#   bench/run.sh studio [SIZES [SECONDS]]   (e.g. 2000,20000,100000 5: the default)
 #
 # Without a selector every benchmark runs and the options go to the first two
 # (e.g. --sizes 10K,100K); with one, only that benchmark runs and gets the
@@ -19,6 +20,14 @@ cd "$root"
 
 benches=(throughput rule_cost meshing constraint_solvers)
 selected=0 sweep=0
+# The studio: a real server and a headless Chromium page (bench/studio_bench.mjs).
+if [[ "${1:-}" == studio ]]; then
+  shift
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$build" --target tendril
+  (cd "$root/web" && npm run --silent build)
+  exec node --experimental-websocket --no-warnings "$root/bench/studio_bench.mjs" "$@"
+fi
 case "${1:-}" in
   sweep)
     benches=()

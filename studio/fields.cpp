@@ -1,6 +1,7 @@
 #include "fields.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace tendril::studio {
 
@@ -43,7 +44,7 @@ std::vector<float> axial_force(const Model& m, const Topology& t) {
 // averaged onto each segment from its two ends.
 std::vector<float> bending_moment(const Model& m, const Topology& t) {
   const std::size_t n = t.edge_kind.size();
-  std::vector<float> out(n, 0.f);
+  std::vector<float> out(n, std::numeric_limits<float>::quiet_NaN());
   const Vec3* x = m.particles.position.data();
   std::size_t e = 0;
   while (e < n) {  // a block's beam edges are consecutive, in path order

@@ -1,6 +1,7 @@
 #pragma once
 // The colour maps the page offers: one value per drawn edge (frames.hpp),
-// computed on the solver thread for the frame that carries it. A new map is
+// computed on the solver thread for the frame that carries it; NaN where the
+// quantity does not apply (a cable's bending moment), drawn uncoloured. A new map is
 // one entry in fields() (fields.cpp); the page lists them with their units.
 #include <string>
 #include <vector>

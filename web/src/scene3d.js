@@ -7,18 +7,16 @@ import { EDGE_BEAM, EDGE_CABLE, STATE_COLOURS } from './protocol.js';
 
 const BEAM = new THREE.Color(0x1f3a93), CABLE = new THREE.Color(0x555555), PATCH = new THREE.Color(0x8a8a8a);
 
-// Blue (compression, negative) - light grey - red (tension), or light to
-// dark for values of one sign.
+// Diverging: blue (compression, negative) - light grey - red (tension).
+// One sign: blue - green - yellow - red. legendGradient() draws the same stops.
+const DIVERGING = [[0, 0.25, 0.85], [0.82, 0.82, 0.82], [0.9, 0.05, 0.05]];
+const SEQUENTIAL = [[0.15, 0.25, 0.85], [0.1, 0.7, 0.3], [0.95, 0.8, 0.1], [0.9, 0.05, 0.05]];
 function colourOf(t, diverging, out) {
-  if (diverging) {
-    const a = Math.max(-1, Math.min(1, t));
-    if (a < 0) out.setRGB(0.85 + 0.85 * a, 0.85 + 0.6 * a, 0.9 + 0.1 * a);
-    else out.setRGB(0.85 + 0.15 * a, 0.85 - 0.75 * a, 0.85 - 0.75 * a);
-  } else {
-    const a = Math.max(0, Math.min(1, t));
-    out.setRGB(0.95 - 0.7 * a, 0.9 - 0.2 * a + 0.0, 0.3 + 0.3 * (1 - a));
-  }
-  return out;
+  const stops = diverging ? DIVERGING : SEQUENTIAL;
+  const a = Math.max(0, Math.min(1, diverging ? (t + 1) / 2 : t)) * (stops.length - 1);
+  const i = Math.min(stops.length - 2, Math.floor(a)), f = a - i;
+  const [p, q] = [stops[i], stops[i + 1]];
+  return out.setRGB(p[0] + f * (q[0] - p[0]), p[1] + f * (q[1] - p[1]), p[2] + f * (q[2] - p[2]));
 }
 
 export class View3D {
@@ -126,7 +124,8 @@ export class View3D {
     let range = 0, lo = Infinity, hi = -Infinity;
     const values = this.field && f.field && f.field.length === ne ? f.field : null;
     if (values) {
-      for (let e = 0; e < ne; ++e) { lo = Math.min(lo, values[e]); hi = Math.max(hi, values[e]); }
+      for (let e = 0; e < ne; ++e) if (Number.isFinite(values[e])) { lo = Math.min(lo, values[e]); hi = Math.max(hi, values[e]); }
+      if (lo > hi) lo = hi = 0;
       range = Math.max(Math.abs(lo), Math.abs(hi)) || 1;
     }
     const diverging = values && lo < 0 && hi > 0;
@@ -143,7 +142,7 @@ export class View3D {
         continue;
       }
       this.edgePositions.set([p[a], p[a + 1], p[a + 2], p[b], p[b + 1], p[b + 2]], 6 * solid);
-      if (values) colourOf(diverging ? values[e] / range : (values[e] - lo) / ((hi - lo) || 1), diverging, c);
+      if (values && Number.isFinite(values[e])) colourOf(diverging ? values[e] / range : (values[e] - lo) / ((hi - lo) || 1), diverging, c);
       else c.copy(t.edgeKind[e] === EDGE_BEAM ? BEAM : t.edgeKind[e] === EDGE_CABLE ? CABLE : PATCH);
       this.edgeColours.set([c.r, c.g, c.b, c.r, c.g, c.b], 6 * solid);
       ++solid;
@@ -238,6 +237,6 @@ export class View3D {
 }
 
 export function legendGradient(diverging) {
-  return diverging ? 'linear-gradient(to right, rgb(0,64,204), rgb(217,217,230), rgb(255,26,26))'
-                   : 'linear-gradient(to right, rgb(242,230,153), rgb(64,179,77))';
+  const css = (c) => `rgb(${c.map((x) => Math.round(255 * x)).join(',')})`;
+  return `linear-gradient(to right, ${(diverging ? DIVERGING : SEQUENTIAL).map(css).join(', ')})`;
 }
