@@ -126,6 +126,7 @@ int plan_only(const SweepArguments& a) {
 int one_task(const SweepArguments& a) {
   if (!a.scene.empty() || !a.params.empty() || !a.seeds.empty())
     throw UsageError("--task runs a run of a planned sweep: give only --out DIR, whose plan.csv says the rest");
+  if (!has_plan(a.out)) throw UsageError(a.out + " holds no sweep plan (plan.csv)");
   const Plan plan = read_plan(a.out);
   if (a.task < 1 || a.task > std::int64_t(plan.runs.size()))
     throw UsageError("--task " + std::to_string(a.task) + ": the plan has runs 1 to " + std::to_string(plan.runs.size()));
@@ -142,6 +143,7 @@ int gather_only(const SweepArguments& a) {
   if (!a.scene.empty() || !a.params.empty() || !a.seeds.empty())
     throw UsageError("--gather collects a planned sweep: give only its folder, whose plan.csv says the rest");
   const std::string& dir = a.gather_dir;
+  if (!has_plan(dir)) throw UsageError(dir + " holds no sweep plan (plan.csv)");
   const Plan plan = read_plan(dir);
   const std::string job = submitted_job(dir);
   Gathered g(plan, dir, job.empty() ? std::map<int, std::string>{} : queue_states(job));
@@ -205,15 +207,19 @@ Command sweep_command() {
                 ->capture_default_str();
             auto* plan = cli.add_option("--plan", a->plan_dir, "only writes the plan, DIR/plan.csv")->type_name("DIR");
             auto* resume = cli.add_flag("--resume", a->resume, "continues the sweep in --out: finished runs are kept");
-            add_integer(cli, "--jobs", a->jobs, 1, 4096, "runs at once on this machine")->capture_default_str();
+            add_integer(cli, "--jobs", a->jobs, 1, 4096, "runs at once on this machine")->type_name("N")->capture_default_str();
             auto* slurm = cli.add_flag("--slurm", a->slurm, "submits the runs as one Slurm job array (sbatch)");
-            cli.add_option("--partition", a->slurm_options.partition, "sbatch --partition")->needs(slurm);
-            cli.add_option("--time", a->slurm_options.time, "sbatch --time, per run (e.g. 30:00)")->needs(slurm);
+            cli.add_option("--partition", a->slurm_options.partition, "sbatch --partition")->type_name("NAME")->needs(slurm);
+            cli.add_option("--time", a->slurm_options.time, "sbatch --time, per run (e.g. 30:00)")
+                ->type_name("TIME")
+                ->needs(slurm);
             add_integer(cli, "--array-max", a->array_max, 1, 1'000'000, "at most N tasks at once (--array=...%N)")
+                ->type_name("N")
                 ->needs(slurm);
             cli.add_flag("--no-wait", a->no_wait, "returns once submitted; --gather collects")->needs(slurm);
             auto* task = add_integer(cli, "--task", a->task, 1, kMax,
-                                     "runs run K of --out's plan (what a Slurm array task calls)");
+                                     "runs run K of --out's plan (what a Slurm array task calls)")
+                           ->type_name("K");
             auto* gather = cli.add_option("--gather", a->gather_dir, "collects DIR's runs into sweep.csv and summary.md")
                                ->type_name("DIR");
             for (CLI::Option* mode : {plan, task, gather})

@@ -8,6 +8,8 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <vector>
 
@@ -29,10 +31,16 @@ std::string host_name() {
   return name;
 }
 
-std::string read_if_regular(const std::string& path) {
+// The end of a run's stderr: where its error is, however much it printed before.
+std::string tail_of(const std::string& path) {
+  constexpr std::streamoff kTail = 64 * 1024;
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) return "";
-  return read_input_file(path);
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(size > kTail ? size - kTail : 0);
+  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 // The scene's error as `tendril run` printed it: from the last line naming
@@ -139,7 +147,7 @@ Outcome record_end(const std::string& dir, int wait_status, double seconds, int 
   if (WIFEXITED(wait_status)) {
     o.exit_status = WEXITSTATUS(wait_status);
     o.kind = o.exit_status == 0 ? Outcome::kOk : Outcome::kFailed;
-    if (o.exit_status != 0) o.error = error_of(read_if_regular(dir + "/stderr.txt"), o.exit_status);
+    if (o.exit_status != 0) o.error = error_of(tail_of(dir + "/stderr.txt"), o.exit_status);
   } else {
     const int sig = WTERMSIG(wait_status);
     o.exit_status = 128 + sig;
