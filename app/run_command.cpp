@@ -55,6 +55,9 @@ Command run_command() {
             add_integer(cli, "--seed", a->options.seed, std::numeric_limits<std::int64_t>::min(), kMax,
                         "seeds math.random; tendril.seed reads it")
                 ->capture_default_str();
+            add_integer(cli, "--threads", a->options.threads, 1, 64,
+                        "solver threads of every model (m:settings{threads} overrides); the numbers do not depend on it")
+                ->capture_default_str();
             cli.add_option("--param", a->params, "a value for tendril.param(NAME, default) (repeatable)")
                 ->type_name("NAME=VALUE")
                 ->expected(1)

@@ -15,6 +15,7 @@ struct SceneOptions {
   std::int64_t max_steps = -1;        // caps every run{}; -1: no cap
   std::int64_t seed = 1;              // math.randomseed and tendril.seed
   bool progress = true;               // progress lines on stderr for long runs
+  std::int64_t threads = 1;           // --threads: solver threads of every model (m:settings{threads} overrides)
   // Lua chunks (name, source) run before the scene, after the rule library:
   // the layers above the grammar (agents) hand themselves in here.
   std::vector<std::pair<std::string, std::string>> preload;

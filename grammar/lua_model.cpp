@@ -123,7 +123,7 @@ Damping parse_damping(const std::string& name, const char* fn) {
 const std::initializer_list<const char*> kSettingKeys = {
     "dt",       "damping",   "viscous",        "geometric_factor", "mass_factor", "gravity",
     "integrator", "mass_mode", "vie_iterations", "vie_dt",           "mixed_switch",
-    "mixed_implicit"};
+    "mixed_implicit", "threads"};
 
 void apply_settings(lua_State* L, int idx, Scene& s, const char* fn) {
   SolverSettings& st = s.solver.settings;
@@ -158,6 +158,10 @@ void apply_settings(lua_State* L, int idx, Scene& s, const char* fn) {
   else key_error(fn, "mixed_implicit", "must be \"vie\" or \"projective\", got \"" + implicit + "\"");
   st.mixed_switch = field_number(L, idx, "mixed_switch", fn, st.mixed_switch);
   if (!(st.mixed_switch > 0 && st.mixed_switch < 1)) key_error(fn, "mixed_switch", "must be in (0, 1)");
+  const double threads = field_number(L, idx, "threads", fn, st.threads);
+  if (!(threads >= 1 && threads <= 64) || threads != std::floor(threads))
+    key_error(fn, "threads", "must be a whole number from 1 to 64");
+  st.threads = int(threads);
 }
 
 Scene& push_new_scene(lua_State* L) {
@@ -166,6 +170,7 @@ Scene& push_new_scene(lua_State* L) {
   luaL_setmetatable(L, kModelMeta);
   *slot = new Scene();
   (*slot)->options = g_options;
+  if (g_options) (*slot)->solver.settings.threads = int(g_options->threads);
   return **slot;
 }
 
@@ -617,6 +622,8 @@ int l_settings(lua_State* L) {
   lua_setfield(L, -2, "mixed_switch");
   lua_pushstring(L, integrator_name(st.mixed_implicit));
   lua_setfield(L, -2, "mixed_implicit");
+  lua_pushinteger(L, st.threads);
+  lua_setfield(L, -2, "threads");
   lua_pushstring(L, s.solver.phase());
   lua_setfield(L, -2, "phase");
   return 1;

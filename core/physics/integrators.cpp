@@ -35,6 +35,25 @@ inline Quat turned(const Vec3& r, const Quat& q) { return Quat(rotation_of(r) * 
 // synchronous integrator): Leapfrog is not self-starting and kicks half a
 // step, Symplectic Euler kicks a whole one.
 void Solver::integrate_leapfrog() { kick_drift(half_step_); }
+
+// v' = keep v + first B dt / M F: eq. 3.11 (first = 1/2 for Leapfrog's
+// start), with eq. 3.26's A and B when viscous.
+Solver::Kick Solver::kick(bool whole_kick) const {
+  double A = 1, B = 1;
+  if (settings.damping == Damping::Viscous) {  // eq. 3.26
+    A = (1 - settings.viscous / 2) / (1 + settings.viscous / 2);
+    B = (1 + A) / 2;
+  }
+  return {whole_kick ? 1.0 : 0.5, whole_kick ? A : 1.0, B};
+}
+
+// Eq. 3.29-3.31: the fraction q of the last step back to the interpolated
+// kinetic-energy peak.
+double Solver::peak_fraction(double ke) const {
+  if (ke_samples_ < 2) return 0;
+  const double G = ke_prev2_ - ke_prev_, H = ke_prev_ - ke;
+  return H - G != 0 ? H / (H - G) : 0.0;
+}
 void Solver::integrate_symplectic_euler() { kick_drift(true); }
 
 void Solver::kick_drift(bool whole_kick) {
@@ -43,12 +62,8 @@ void Solver::kick_drift(bool whole_kick) {
   const std::uint8_t* lock = P.lock.data();
   const std::vector<ParticleId>& integrated = P.integrated.raw();
   const double dt = settings.dt;
-  double A = 1, B = 1;
-  if (settings.damping == Damping::Viscous) {  // eq. 3.26
-    A = (1 - settings.viscous / 2) / (1 + settings.viscous / 2);
-    B = (1 + A) / 2;
-  }
-  const double first = whole_kick ? 1.0 : 0.5, keep = whole_kick ? A : 1.0;
+  const Kick kick_factors = kick(whole_kick);
+  const double first = kick_factors.first, keep = kick_factors.keep, B = kick_factors.B;
   double momentum2 = 0, ke = 0;
   Vec3* v = P.velocity.data();
   const Vec3* F = P.force.data();
@@ -81,11 +96,7 @@ void Solver::kick_drift(bool whole_kick) {
   if (kinetic_peak_passed(ke)) {
     // Peak passed: move back to the interpolated peak (eq. 3.29-3.31), stop.
     // Frames turn back by the same interpolation of their rotation vector.
-    double q = 0;
-    if (ke_samples_ >= 2) {
-      const double G = ke_prev2_ - ke_prev_, H = ke_prev_ - ke;
-      if (H - G != 0) q = H / (H - G);
-    }
+    const double q = peak_fraction(ke);
     for (ParticleId p : integrated) {
       const Vec3 Ff = F[p].cwiseProduct(free_axes(lock[p]));
       x[p] += dt * v[p] - dt * (1 + q) * v[p] + 0.5 * dt * dt * q * Ff / mass[p];
@@ -103,6 +114,111 @@ void Solver::kick_drift(bool whole_kick) {
   for (ParticleId p : integrated) x[p] += dt * v[p];  // eq. 3.12
   for (ParticleId p : rotating)
     if (active[p]) R[p] = turned(dt * w[p], R[p]);  // eq. 3.19
+  record_energy(ke, momentum2);
+  half_step_ = true;
+}
+
+bool Solver::fused_kick_drift_applies() const {
+  const Integrator i = settings.integrator;
+  return (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) && model_.hinges.awake == 0 &&
+         model_.beam6s.awake == 0 && model_.joints.items.empty() && model_.goals.empty() &&
+         model_.csts.items.empty() && model_.particles.rotational.empty();
+}
+
+// kick_drift for a model of bars alone, without a separate force pass: each
+// chunk's particles are kicked as soon as their forces are complete (its
+// own bars, then its inbox), while they are still in the cache. The
+// arithmetic is kick_drift's; sums over particles (kinetic energy) are
+// gathered per chunk and added in chunk order. A force, stiffness or mass
+// the step cannot use is found only after some velocities were kicked:
+// the velocities are reset, prepare_masses names the particle as for the
+// other integrators, and no particle was moved.
+void Solver::fused_kick_drift(bool whole_kick) {
+  Particles& P = model_.particles;
+  const BarChunks& chunks = bar_chunks();
+  chunk_sums_.resize(chunks.chunks.size());
+  const bool physical = settings.mass_mode == MassMode::Physical;
+  const double mass_scale =
+      settings.mass_factor * fictitious_mass_scale(settings.integrator) * 0.5 * settings.dt * settings.dt;  // eq. 3.4
+  const double dt = settings.dt;
+  const Kick kick_factors = kick(whole_kick);
+  const double first = kick_factors.first, keep = kick_factors.keep, B = kick_factors.B;
+  const std::uint8_t* lock = P.lock.data();
+  const double *point_mass = P.point_mass.data(), *lumped_mass = P.lumped_mass.data();
+  Vec3 *F = P.force.data(), *v = P.velocity.data(), *x = P.position.data();
+  double* S = P.stiffness.data();
+  // The mass of eq. 3.4 (or the physical one) as prepare_masses sets it;
+  // 0 when the step cannot use it.
+  auto mass_of = [&](ParticleId p, const Vec3& free) {
+    if (!physical) return mass_scale * S[p];
+    const double M = point_mass[p] + lumped_mass[p];
+    return M > 0 || !free.isZero() ? M : 1.0;
+  };
+  auto kick_chunk = [&](std::uint32_t c) {
+    const BarChunks::Chunk& ch = chunks.chunks[c];
+    chunk_inbox(ch, F, S);
+    ChunkSums sums;
+    for (std::uint32_t n = ch.particles_begin; n < ch.particles_end; ++n) {
+      const ParticleId p = chunks.particles[n];
+      const Vec3 free = free_axes(lock[p]);
+      const double M = mass_of(p, free);
+      if (!F[p].allFinite() || !std::isfinite(S[p]) || !(M > 0)) [[unlikely]] {
+        sums.bad = true;
+        continue;
+      }
+      sums.residual2 = std::max(sums.residual2, F[p].cwiseProduct(free).squaredNorm());
+      v[p] = (keep * v[p] + (first * B * dt / M) * F[p]).cwiseProduct(free);  // eq. 3.11 / 3.26
+      sums.ke += M * v[p].squaredNorm();                                      // eq. 3.28
+      sums.momentum2 = std::max(sums.momentum2, M * M * v[p].squaredNorm());
+    }
+    chunk_sums_[c] = sums;
+  };
+  for_chunks([&](std::uint32_t c) { chunk_bar_forces(chunks.chunks[c], x, F, S); }, kick_chunk);
+  ++evaluations_;
+  double ke = 0, momentum2 = 0, residual2 = 0;
+  bool bad = false;
+  for (const ChunkSums& s : chunk_sums_) {
+    ke += s.ke;
+    momentum2 = std::max(momentum2, s.momentum2);
+    residual2 = std::max(residual2, s.residual2);
+    bad |= s.bad;
+  }
+  if (bad) [[unlikely]] {
+    reset_motion();
+    prepare_masses();  // throws, naming the first particle at fault
+    throw NumericalError("solver: a force or mass is not usable at step " + std::to_string(steps_) +
+                         "; velocities were reset, no particle was moved");
+  }
+  torque_residual_ = 0;
+  residual_ = std::sqrt(residual2);
+  if (!std::isfinite(ke)) [[unlikely]] {  // beyond the stability limit: the kick overflowed
+    const NumericalError e =
+        non_finite_motion(model_, nullptr, v, nullptr, settings, steps_, "velocities were reset, no particle was moved");
+    reset_motion();
+    throw e;
+  }
+  if (kinetic_peak_passed(ke)) {  // eq. 3.29-3.31, as kick_drift
+    const double q = peak_fraction(ke);
+    for_chunks([&](std::uint32_t c) {
+      const BarChunks::Chunk& ch = chunks.chunks[c];
+      for (std::uint32_t n = ch.particles_begin; n < ch.particles_end; ++n) {
+        const ParticleId p = chunks.particles[n];
+        const Vec3 free = free_axes(lock[p]);
+        const Vec3 Ff = F[p].cwiseProduct(free);
+        x[p] += dt * v[p] - dt * (1 + q) * v[p] + 0.5 * dt * dt * q * Ff / mass_of(p, free);
+        v[p].setZero();
+      }
+    });
+    record_reset();
+    return;
+  }
+  for_chunks([&](std::uint32_t c) {
+    const BarChunks::Chunk& ch = chunks.chunks[c];
+    for (std::uint32_t n = ch.particles_begin; n < ch.particles_end; ++n) {
+      const ParticleId p = chunks.particles[n];
+      x[p] += dt * v[p];  // eq. 3.12
+    }
+  });
   record_energy(ke, momentum2);
   half_step_ = true;
 }

@@ -104,6 +104,13 @@ void Solver::compute_forces() {
 
 void Solver::step() {
   size_scratch();
+  if (fused_kick_drift_applies()) {
+    mixed_implicit_ = false, mixed_peak_ = 0;
+    fused_kick_drift(settings.integrator == Integrator::SymplecticEuler || half_step_);
+    ++steps_;
+    time_ += settings.dt;
+    return;
+  }
   compute_forces();
   prepare_masses();
   if (settings.integrator != Integrator::Mixed) mixed_implicit_ = false, mixed_peak_ = 0;

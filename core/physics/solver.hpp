@@ -23,6 +23,8 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "physics/bar_chunks.hpp"
+#include "physics/workers.hpp"
 
 namespace tendril {
 
@@ -101,6 +103,10 @@ struct SolverSettings {
   // the residual the implicit phase started from (a load or topology change).
   double mixed_switch = 0.01;
   Integrator mixed_implicit = Integrator::VariationalImplicitEuler;
+  // Threads of a step (1 to 64). The work is split into chunks fixed by the
+  // model (bar_chunks.hpp) and summed in chunk order, so the results are the
+  // same, bit for bit, for every thread count.
+  int threads = 1;
 };
 
 struct RunResult {
@@ -119,7 +125,8 @@ class ProjectiveSystem;  // projective.hpp
 
 class Solver {
  public:
-  explicit Solver(Model& model) : model_(model) {}
+  explicit Solver(Model& model);
+  ~Solver();
   SolverSettings settings;
 
   void step();
@@ -160,6 +167,23 @@ class Solver {
   // forces.cpp: forces F and stiffnesses S at positions x; torques T and
   // rotational stiffnesses K (rotating particles only) at frames q.
   void accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S, Vec3* T, double* K) const;
+  // The lean bars (bar_chunks.hpp), derived again when the model changed.
+  const BarChunks& bar_chunks() const;
+  // Chunk c's particles start from their loads and take its bars' forces;
+  // its crossing bars fill their slots. Then its inbox adds the slots of
+  // the crossing bars into it.
+  void chunk_bar_forces(const BarChunks::Chunk& c, const Vec3* x, Vec3* F, double* S) const;
+  void chunk_inbox(const BarChunks::Chunk& c, Vec3* F, double* S) const;
+  // body(c) then late(c) for every chunk, the chunks split over the threads
+  // in contiguous ranges; a chunk whose inbox draws on an earlier thread's
+  // range runs late(c) once every thread finished its range.
+  void for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(std::uint32_t)> late) const;
+  // The same body(c) for every chunk, in parallel.
+  void for_chunks(FunctionRef<void(std::uint32_t)> body) const;
+  // Leapfrog and Symplectic Euler over bars alone: forces and the kick in
+  // one pass per chunk, then the drift (integrators.cpp).
+  bool fused_kick_drift_applies() const;
+  void fused_kick_drift(bool whole_kick);
   void accumulate_joint_forces(const Vec3* x, Vec3* F, double* S) const;  // joints.cpp
   void accumulate_goal_forces(const Vec3* x, Vec3* F, double* S) const;   // goal_forces.cpp
   void accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const;    // cst_forces.cpp
@@ -171,6 +195,11 @@ class Solver {
   void integrate_leapfrog();
   void integrate_symplectic_euler();
   void kick_drift(bool whole_kick);  // both; Leapfrog's first kick from v(t) is half a step
+  struct Kick {
+    double first, keep, B;
+  };
+  Kick kick(bool whole_kick) const;
+  double peak_fraction(double ke) const;
   void integrate_velocity_verlet();
   void integrate_midpoint();
   void integrate_rk4();
@@ -223,6 +252,15 @@ class Solver {
   std::vector<double> cst_weight_;   // local step: the CST stiffnesses
   std::vector<Vec3> x0_, r0_;        // implicit: x0 of eq. 3.57, and its rotation vector from the frame
   std::shared_ptr<ProjectiveSystem> projective_;  // projective.hpp, built on first use
+  mutable BarChunks bar_chunks_;
+  std::unique_ptr<Workers> workers_;
+  // Per chunk: what a pass reduces, padded so threads do not share a line.
+  struct alignas(64) ChunkSums {
+    double ke = 0, momentum2 = 0, residual2 = 0;
+    bool bad = false;  // a force, stiffness or mass the step cannot use
+  };
+  std::vector<ChunkSums> chunk_sums_;
+  mutable std::vector<std::uint32_t> thread_first_chunk_;  // for_chunks: each thread's range
   std::vector<double> projective_mass_;             // M frozen with its factorisation
   bool mixed_implicit_ = false;      // Mixed: in its implicit phase
   double mixed_peak_ = 0, mixed_entry_ = 0;

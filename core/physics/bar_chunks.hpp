@@ -1,0 +1,62 @@
+#pragma once
+// The step's lean copy of the awake bars (DESIGN principle 1: a derived
+// cache), laid out for one streaming pass and for threads:
+// - structure of arrays holding only what the force reads, with k = EA / L
+//   stored (eq. 3.32), no dart, line mass or block;
+// - the integrated particles split by id into chunks of a fixed size that
+//   depends on the model, never on the thread count; a bar belongs to the
+//   chunk of its smaller particle (stored as i, the other as j: swapping the
+//   ends negates the force exactly, so no sum changes);
+// - a bar whose j lies in another chunk is "crossing": its owner writes the
+//   force on j into a slot, and j's chunk adds its slots (its inbox) after
+//   its own bars. Every particle's force is thus summed in one fixed order:
+//   its initial load, its own chunk's bars in model order, then its inbox in
+//   slot order, whatever thread ran which chunk. A model within one chunk
+//   (up to 1024 particles) sums exactly as the model's bar order says.
+// Derived again whenever the model's revision or capacity moved.
+#include <cstdint>
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace tendril {
+
+struct BarChunks {
+  struct Chunk {
+    std::uint32_t particles_begin = 0, particles_end = 0;         // into `particles`
+    std::uint32_t bars_begin = 0, crossing_begin = 0, bars_end = 0;  // [crossing_begin, bars_end) cross out
+    std::uint32_t slot_begin = 0;                                  // slot of its first crossing bar
+    std::uint32_t inbox_begin = 0, inbox_end = 0;                  // into inbox_*
+    std::uint32_t first_source = 0;  // the smallest chunk with a bar into this one's inbox (else itself)
+  };
+
+  // The number of particles per chunk for a model of this capacity: a power
+  // of two from 1024 to 16384, about capacity / 16.
+  static std::uint32_t chunk_shift_for(std::size_t capacity);
+  bool current(const Model& m) const {
+    return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity();
+  }
+  void derive(const Model& m);
+
+  std::uint32_t shift = 10;
+  std::vector<Chunk> chunks;
+  std::vector<ParticleId> particles;  // integrated particles by chunk, in `integrated` order
+  // Bars, chunk by chunk: ends, k = EA / L, rest length, prestress, cable
+  // (tension only).
+  std::vector<ParticleId> i, j;
+  std::vector<double> k, rest, prestress;
+  std::vector<std::uint8_t> cable;
+  std::vector<ParticleId> inbox_particle;
+  std::vector<std::uint32_t> inbox_slot;
+  // Scratch written by a pass: the force (on i; j takes minus it) and the
+  // stiffness of every crossing bar.
+  std::vector<Vec3> slot_force;
+  std::vector<double> slot_stiffness;
+
+ private:
+  const Model* model_ = nullptr;
+  std::uint64_t revision_ = ~std::uint64_t(0);
+  std::size_t capacity_ = 0;
+};
+
+}  // namespace tendril
