@@ -22,6 +22,35 @@ const BarChunks& Solver::bar_chunks() const {
   return bar_chunks_;
 }
 
+namespace {
+
+// Bars are evaluated in blocks: the chords are gathered, then one loop
+// without memory indirection (the compiler vectorises it, square roots and
+// divisions included) finds each bar's length L, force factor c = T / L and
+// stiffness s, then the forces are scattered. Per bar the arithmetic is
+// exactly that of one bar at a time.
+constexpr std::uint32_t kBarBlock = 64;
+
+struct BarBlock {
+  alignas(64) double dx[kBarBlock], dy[kBarBlock], dz[kBarBlock];
+  alignas(64) double L[kBarBlock], c[kBarBlock], s[kBarBlock];
+};
+
+// Eq. 3.32 (no tension in a slack cable), eq. 3.33's T / L and eq. 3.35.
+void bar_block(BarBlock& b, std::uint32_t n, const double* __restrict k, const double* __restrict rest,
+               const double* __restrict pre, const std::uint8_t* __restrict cable, double gf) {
+  for (std::uint32_t m = 0; m < n; ++m) {
+    const double L = std::sqrt(b.dx[m] * b.dx[m] + b.dy[m] * b.dy[m] + b.dz[m] * b.dz[m]);
+    const double T0 = pre[m] + k[m] * (L - rest[m]);
+    const double T = cable[m] && T0 < 0 ? 0.0 : T0;
+    b.L[m] = L;
+    b.c[m] = T / L;
+    b.s[m] = k[m] + (L > 0 && T > 0 ? gf * T / L : 0.0);
+  }
+}
+
+}  // namespace
+
 void Solver::chunk_bar_forces(const BarChunks::Chunk& c, const Vec3* x, Vec3* F, double* S) const {
   const Particles& P = model_.particles;
   const BarChunks& B = bar_chunks_;
@@ -35,39 +64,38 @@ void Solver::chunk_bar_forces(const BarChunks::Chunk& c, const Vec3* x, Vec3* F,
   }
   const double gf = settings.geometric_factor;
   const ParticleId *bi = B.i.data(), *bj = B.j.data();
-  const double *bk = B.k.data(), *rest = B.rest.data(), *pre = B.prestress.data();
-  const std::uint8_t* cable = B.cable.data();
-  // One bar: its tension (eq. 3.32, none in a slack cable), its force on i
-  // (eq. 3.33) and the direct stiffness of both ends (eq. 3.35).
-  auto bar = [&](std::uint32_t e, Vec3& f, double& s) {
-    const Vec3 d = x[bj[e]] - x[bi[e]];
-    const double L = d.norm();
-    const double k = bk[e];
-    double T = pre[e] + k * (L - rest[e]);
-    if (cable[e] && T < 0) T = 0;
-    s = k + (L > 0 && T > 0 ? gf * T / L : 0.0);
-    if (!(L > 0)) return false;
-    f = (T / L) * d;
-    return true;
-  };
-  Vec3 f;
-  double s;
-  for (std::uint32_t e = c.bars_begin; e < c.crossing_begin; ++e) {
-    if (bar(e, f, s)) {
-      F[bi[e]] += f;
-      F[bj[e]] -= f;
+  BarBlock b;
+  Vec3* slot_f = bar_chunks_.slot_force.data();
+  double* slot_s = bar_chunks_.slot_stiffness.data();
+  for (std::uint32_t e0 = c.bars_begin; e0 < c.bars_end; e0 += kBarBlock) {
+    const std::uint32_t n = std::min(kBarBlock, c.bars_end - e0);
+    for (std::uint32_t m = 0; m < n; ++m) {
+      const Vec3 d = x[bj[e0 + m]] - x[bi[e0 + m]];
+      b.dx[m] = d.x();
+      b.dy[m] = d.y();
+      b.dz[m] = d.z();
     }
-    S[bi[e]] += s;
-    S[bj[e]] += s;
-  }
-  Vec3* slot_f = bar_chunks_.slot_force.data() + c.slot_begin;
-  double* slot_s = bar_chunks_.slot_stiffness.data() + c.slot_begin;
-  for (std::uint32_t e = c.crossing_begin; e < c.bars_end; ++e, ++slot_f, ++slot_s) {
-    if (bar(e, f, s)) F[bi[e]] += f;
-    else f.setZero();
-    S[bi[e]] += s;
-    *slot_f = f;
-    *slot_s = s;
+    bar_block(b, n, B.k.data() + e0, B.rest.data() + e0, B.prestress.data() + e0, B.cable.data() + e0, gf);
+    for (std::uint32_t m = 0; m < n; ++m) {
+      const std::uint32_t e = e0 + m;
+      const ParticleId i = bi[e], j = bj[e];
+      Vec3 f = Vec3::Zero();
+      if (b.L[m] > 0) f = b.c[m] * Vec3(b.dx[m], b.dy[m], b.dz[m]);
+      if (e < c.crossing_begin) {
+        if (b.L[m] > 0) {
+          F[i] += f;
+          F[j] -= f;
+        }
+        S[i] += b.s[m];
+        S[j] += b.s[m];
+      } else {  // j is another chunk's: its share waits in the slot
+        if (b.L[m] > 0) F[i] += f;
+        S[i] += b.s[m];
+        const std::uint32_t slot = c.slot_begin + (e - c.crossing_begin);
+        slot_f[slot] = f;
+        slot_s[slot] = b.s[m];
+      }
+    }
   }
 }
 
