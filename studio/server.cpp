@@ -192,10 +192,11 @@ void Server::topology(std::shared_ptr<const std::string> bytes) {
   wake_.notify_all();
 }
 
-void Server::frame(std::shared_ptr<const std::string> bytes) {
+void Server::frame(std::shared_ptr<const std::string> bytes, bool urgent) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     frame_ = std::move(bytes);
+    frame_urgent_ = urgent;
     ++frame_seq_;
   }
   wake_.notify_all();
@@ -235,7 +236,7 @@ void Server::sender() {
         out.push_back({topology_, true});
         c->topology_sent = topology_seq_;
       }
-      if (frame_ && c->rate > 0 && c->frame_sent != frame_seq_ && now >= c->next_frame) {
+      if (frame_ && c->rate > 0 && c->frame_sent != frame_seq_ && (now >= c->next_frame || frame_urgent_)) {
         out.push_back({frame_, true});
         c->frame_sent = frame_seq_;
         c->next_frame = now + std::chrono::microseconds(std::int64_t(1e6 / c->rate));

@@ -46,7 +46,7 @@ class Server : public Outbox {
   int port() const { return port_; }
 
   void topology(std::shared_ptr<const std::string> bytes) override;
-  void frame(std::shared_ptr<const std::string> bytes) override;
+  void frame(std::shared_ptr<const std::string> bytes, bool urgent) override;
   void send(ClientId to, const std::string& bytes, bool binary) override;
   void broadcast(const std::string& text) override;
   double frame_rate() const override { return rate_.load(); }
@@ -92,6 +92,7 @@ class Server : public Outbox {
   ClientId next_id_ = 1;
   std::shared_ptr<const std::string> topology_, frame_;
   std::uint64_t topology_seq_ = 0, frame_seq_ = 0;
+  bool frame_urgent_ = false;
   std::atomic<double> rate_{0};
   bool stopping_ = false;
   std::thread sender_;

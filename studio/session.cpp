@@ -164,6 +164,10 @@ void Session::pace() {
 
 bool Session::after_step(lua_State* L) {
   bind(L, 1);
+  if (show_next_step_) {
+    publish(true, true);
+    show_next_step_ = false;
+  }
   pace();
   bool changed = apply_queued(L);
   publish(false);
@@ -277,21 +281,21 @@ bool Session::apply_queued(lua_State* L) {
     out_.send(c.from, reply.dump(), false);
     if (spec && name != "field") broadcast_status();
   }
-  if (changed) next_frame_ = {};  // show it now: drag-to-frame latency is one step
+  if (changed) show_next_step_ = true;  // drag-to-frame latency: one step, then the frame
   return changed;
 }
 
-void Session::publish(bool force) {
+void Session::publish(bool force, bool urgent) {
   if (!L_ || model_ref_ == LUA_NOREF) return;
   try {
-    build_frame(force);
+    build_frame(force, urgent);
   } catch (const std::exception& e) {  // a drawing problem never stops the scene; say it once
     if (!frame_error_) out_.broadcast(json{{"type", "error"}, {"message", std::string("frame: ") + e.what()}}.dump());
     frame_error_ = true;
   }
 }
 
-void Session::build_frame(bool force) {
+void Session::build_frame(bool force, bool urgent) {
   const double rate = out_.frame_rate();
   if (rate <= 0 && !force) return;
   const auto now = std::chrono::steady_clock::now();
@@ -306,7 +310,7 @@ void Session::build_frame(bool force) {
   }
   std::vector<float> values;
   if (const Field* f = find_field(field_)) values = f->values(s.model, topology_);
-  out_.frame(std::make_shared<const std::string>(encode_frame(s.model, s.solver, topology_, values)));
+  out_.frame(std::make_shared<const std::string>(encode_frame(s.model, s.solver, topology_, values)), urgent);
 }
 
 std::size_t Session::production_count(const lua::Scene& s) {

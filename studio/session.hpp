@@ -33,7 +33,9 @@ class Outbox {
  public:
   virtual ~Outbox() = default;
   virtual void topology(std::shared_ptr<const std::string> bytes) = 0;  // every page, before later frames
-  virtual void frame(std::shared_ptr<const std::string> bytes) = 0;     // the latest, at each page's rate
+  // The latest frame, at each page's rate; an urgent one (the first to show
+  // a command's effect) goes out at once.
+  virtual void frame(std::shared_ptr<const std::string> bytes, bool urgent) = 0;
   virtual void send(ClientId to, const std::string& bytes, bool binary) = 0;
   virtual void broadcast(const std::string& text) = 0;
   virtual double frame_rate() const = 0;  // the fastest rate a page asked for; 0: nobody watches
@@ -78,9 +80,10 @@ class Session {
   void bind(lua_State* L, int model_index);
   bool apply_queued(lua_State* L);  // true when the model changed
   void wait_for_commands(std::chrono::milliseconds timeout);
-  void publish(bool force);
-  void build_frame(bool force);
+  void publish(bool force, bool urgent = false);
+  void build_frame(bool force, bool urgent);
   bool frame_error_ = false;
+  bool show_next_step_ = false;  // a command changed the model: the frame after the next step shows it
   void broadcast_status();
   std::size_t production_count(const lua::Scene& s);  // incremental: the journal only grows between rewinds
   struct {

@@ -12,6 +12,7 @@ import * as P from './protocol.js';
 const query = new URLSearchParams(location.search);
 const token = query.get('token');
 const rate = Number(query.get('fps') || 30);
+const drawing = query.get('draw') !== '0';  // ?draw=0: receive frames, draw nothing (the benchmark's control)
 const $ = (id) => document.getElementById(id);
 const view = new View3D($('view'));
 
@@ -64,6 +65,7 @@ let dragSent = null;  // {at, step} of the drag waiting for its frame
 function onBinary(buffer) {
   const k = P.kind(buffer);
   if (k === P.TOPOLOGY) {
+    studio.topologies = (studio.topologies || 0) + 1;
     studio.topology = P.readTopology(buffer);
     if (!studio.preview) { view.setTopology(studio.topology); paintSelection(); }
   } else if (k === P.FRAME) {
@@ -90,7 +92,7 @@ function onText(m) {
   if (m.type === 'reply') {
     studio.replies.push(m);
     if (studio.replies.length > 200) studio.replies.shift();
-    if (m.cmd === 'drag' && dragSent && m.ok) dragSent.step = m.value.step;
+    if (m.cmd === 'drag' && dragSent && m.ok && dragSent.step === null) dragSent.step = m.value.step;  // the first drag's
     if (m.cmd === 'hello' && m.ok) onHello(m.value);
     if (pending.has(m.id)) { pending.get(m.id)(m); pending.delete(m.id); }
     if (!['hello', 'drag', 'field', 'timeline'].includes(m.cmd)) say(m.ok ? `${m.cmd}: done` + (m.value && m.value.length ? ' → ' + JSON.stringify(m.value) : '') : `${m.cmd} refused: ${m.message}`, m.ok);
@@ -396,7 +398,7 @@ function loop() {
     dragTarget = null;
   }
   view.controls.update();
-  if (dirty || view.changed) {
+  if (drawing && (dirty || view.changed)) {
     const t0 = performance.now();
     view.render();
     studio.renderMs = 0.9 * studio.renderMs + 0.1 * (performance.now() - t0);
