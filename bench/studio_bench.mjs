@@ -1,10 +1,10 @@
 // `bash bench/run.sh studio`: what a page costs and gets. For nets of 2K,
 // 20K and 100K particles (bench/studio_net.lua) it measures the solver's
 // steps per second with no page, then with a headless Chromium page asking
-// for 60 frames per second: the frames the page receives per second, its
-// draw time, the steps per second meanwhile, and the latency from a mouse
-// drag to the first frame that shows it (the frame of a later step than the
-// one the drag was applied at). Goals (issue 15): >= 30 frames/s at 20K,
+// for 60 frames per second: the frames the page receives and draws per
+// second, its draw time, the steps per second meanwhile, and the latency
+// from a mouse drag to the first frame that shows it (the frame of a later
+// step than the one the drag was applied at), received and drawn. Goals (issue 15): >= 30 frames/s at 20K,
 // drag-to-frame < 50 ms, the page costing < 10 % of the steps.
 import fs from 'node:fs';
 import path from 'node:path';
@@ -45,25 +45,34 @@ async function stepsWithoutPage(url, pid) {
   return { rate: (b.steps - a.steps) / ((b.at - a.at) / 1000), cpuPerStep: (c1 - c0) / (b.steps - a.steps) };
 }
 
+// Frames received and drawn per second by a page, the solver's steps and
+// the studio's CPU time meanwhile.
+async function measurePage(page, pid) {
+  await sleep(1500);
+  const probe = () => page.evaluate(() => ({ frames: studio.frames, drawn: studio.drawnFrames || 0, step: studio.frame.step,
+                                             at: performance.now(), draw: studio.renderMs, n: studio.frame.count }));
+  const m0 = await probe(), c0 = cpu(pid);
+  await sleep(seconds * 1000);
+  const m1 = await probe(), c1 = cpu(pid);
+  const dt = (m1.at - m0.at) / 1000;
+  return { n: m1.n, steps: (m1.step - m0.step) / dt, cpuPerStep: (c1 - c0) / (m1.step - m0.step),
+           fps: (m1.frames - m0.frames) / dt, drawn: (m1.drawn - m0.drawn) / dt, draw: m1.draw };
+}
+
+const median = (xs) => { xs.sort((a, b) => a - b); return xs.length ? xs[Math.floor(xs.length / 2)] : NaN; };
 const rows = [];
 for (const size of sizes) {
   const studio = await startStudio(net, ['--param', `particles=${size}`, '--speed', '0', '--tolerance', '1e-12', '--no-wait']);
+  const browser = await openBrowser();
   try {
     say(`${size} particles: steps without a page`);
     const alone = await stepsWithoutPage(studio.url, studio.proc.pid);
     say(`${size} particles: ${alone.rate.toFixed(0)} steps/s; opening the page`);
-    const browser = await openBrowser();
     const page = await browser.newPage();
     await page.goto(studio.url + '?fps=60');
     await page.waitForFunction(() => window.studio && studio.frame, null, { timeout: 120000 });
-    await sleep(1500);
-    const m0 = await page.evaluate(() => ({ frames: studio.frames, step: studio.frame.step, at: performance.now() }));
-    const c0 = cpu(studio.proc.pid);
-    await sleep(seconds * 1000);
-    const m1 = await page.evaluate(() => ({ frames: studio.frames, step: studio.frame.step, at: performance.now(), draw: studio.renderMs, n: studio.frame.count }));
-    const c1 = cpu(studio.proc.pid);
-    const dt = (m1.at - m0.at) / 1000;
-    say(`${size} particles: ${((m1.frames - m0.frames) / dt).toFixed(1)} frames/s; dragging`);
+    const paged = await measurePage(page, studio.proc.pid);
+    say(`${size} particles: ${paged.fps.toFixed(1)} frames/s; dragging`);
     // Drag a particle near the middle for a second and a half.
     const target = await page.evaluate(() => {
       const t = studio.topology, k = Math.floor(t.count / 2) + Math.floor(Math.sqrt(t.count) / 2);
@@ -74,22 +83,44 @@ for (const size of sizes) {
     await page.mouse.down();
     for (let k = 1; k <= 30; ++k) { await page.mouse.move(target.x, target.y - 2 * k); await sleep(50); }
     await page.mouse.up();
-    const lat = (await page.evaluate(() => studio.dragLatency)).sort((a, b) => a - b);
-    await browser.close();
-    rows.push({ particles: m1.n, bare: alone.rate, paged: (m1.step - m0.step) / dt,
-                cpuAlone: alone.cpuPerStep, cpuPaged: (c1 - c0) / (m1.step - m0.step), fps: (m1.frames - m0.frames) / dt, draw: m1.draw,
-                latency: lat.length ? lat[Math.floor(lat.length / 2)] : NaN, drags: lat.length });
+    const lat = await page.evaluate(() => studio.dragLatency), drawnLat = await page.evaluate(() => studio.drawLatency);
+    await page.close();
+    // The control: the same page receiving frames without drawing them
+    // (?draw=0), so without the browser's software WebGL.
+    say(`${size} particles: a page that does not draw`);
+    const bare = await browser.newPage();
+    await bare.goto(studio.url + '?fps=60&draw=0');
+    await bare.waitForFunction(() => window.studio && studio.frame, null, { timeout: 120000 });
+    const undrawn = await measurePage(bare, studio.proc.pid);
+    rows.push({ particles: paged.n, bare: alone.rate, paged: paged.steps, cpuAlone: alone.cpuPerStep, cpuPaged: paged.cpuPerStep,
+                fps: paged.fps, drawnFps: paged.drawn, draw: paged.draw, undrawnFps: undrawn.fps, undrawnSteps: undrawn.steps,
+                latency: median(lat), drawnLatency: median(drawnLat), drags: lat.length });
   } finally {
+    await browser.close();
     await studio.stop();
   }
 }
 
 const pad = (s, n) => String(s).padStart(n);
 const load = fs.readFileSync('/proc/loadavg', 'utf8').split(' ').slice(0, 3).join(' ');
-console.log(`\nstudio: a headless Chromium page asking 60 frames/s (load average ${load} on ${(await import('node:os')).cpus().length} cores)`);
-console.log('drag-to-frame: median over the drags of one gesture; CPU ms/step: the studio process\'s own CPU time per solver step');
-console.log(`${pad('particles', 10)} ${pad('steps/s alone', 14)} ${pad('with page', 10)} ${pad('wall cost', 10)} ${pad('CPU ms/step alone', 18)} ${pad('with page', 10)} ${pad('CPU cost', 9)} ${pad('frames/s', 9)} ${pad('draw ms', 8)} ${pad('drag->frame ms', 15)}`);
+const renderer = await (async () => {  // what draws the page's WebGL (a software rasteriser without a GPU)
+  const browser = await openBrowser();
+  const page = await browser.newPage();
+  const name = await page.evaluate(() => {
+    const gl = document.createElement('canvas').getContext('webgl2');
+    const info = gl && gl.getExtension('WEBGL_debug_renderer_info');
+    return info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : 'unknown';
+  });
+  await browser.close();
+  return name.includes('SwiftShader') ? 'SwiftShader (software)' : name;
+})();
+console.log(`\nstudio: a headless Chromium page asking 60 frames/s (load average ${load} on ${(await import('node:os')).cpus().length} cores; WebGL ${renderer})`);
+console.log('frames/s got, drawn: received by the page and drawn by it; not drawing: the same page with ?draw=0 (no WebGL), and the steps/s beside it');
+console.log('drag->frame: median over the drags of one gesture, to the frame received / drawn; CPU ms/step: the studio process\'s own CPU time per solver step');
+console.log(`${pad('particles', 10)} ${pad('steps/s alone', 14)} ${pad('with page', 10)} ${pad('wall cost', 10)} ${pad('CPU ms/step alone', 18)} ${pad('with page', 10)} ${pad('CPU cost', 9)} ` +
+            `${pad('frames/s got', 13)} ${pad('drawn', 6)} ${pad('draw ms', 8)} ${pad('drag->frame ms got', 19)} ${pad('drawn', 6)} ${pad('not drawing: frames/s', 22)} ${pad('steps/s', 8)}`);
 for (const r of rows)
   console.log(`${pad(r.particles, 10)} ${pad(r.bare.toFixed(0), 14)} ${pad(r.paged.toFixed(0), 10)} ${pad((100 * (1 - r.paged / r.bare)).toFixed(1) + ' %', 10)} ` +
               `${pad((1e3 * r.cpuAlone).toFixed(3), 18)} ${pad((1e3 * r.cpuPaged).toFixed(3), 10)} ${pad((100 * (r.cpuPaged / r.cpuAlone - 1)).toFixed(1) + ' %', 9)} ` +
-              `${pad(r.fps.toFixed(1), 9)} ${pad(r.draw.toFixed(1), 8)} ${pad(r.latency.toFixed(1) + ` (${r.drags})`, 15)}`);
+              `${pad(r.fps.toFixed(1), 13)} ${pad(r.drawnFps.toFixed(1), 6)} ${pad(r.draw.toFixed(1), 8)} ${pad(r.latency.toFixed(1) + ` (${r.drags})`, 19)} ${pad(r.drawnLatency.toFixed(1), 6)} ` +
+              `${pad(r.undrawnFps.toFixed(1), 22)} ${pad(r.undrawnSteps.toFixed(0), 8)}`);

@@ -116,8 +116,10 @@ std::string encode(const Topology& t) {
   return std::move(w.out);
 }
 
-std::string encode_frame(const Model& m, const Solver& s, const Topology& t, const std::vector<float>& field) {
+void encode_frame(const Model& m, const Solver& s, const Topology& t, const std::vector<float>& field, std::string& out) {
   Writer w;
+  w.out.swap(out);
+  w.out.clear();  // keeps its capacity
   w.out.reserve(40 + 12 * t.ids.size() + 4 * field.size());
   w.put(kFrame);
   w.put(t.revision);
@@ -126,13 +128,29 @@ std::string encode_frame(const Model& m, const Solver& s, const Topology& t, con
   w.put(s.time());
   w.put(std::uint32_t(t.ids.size()));
   w.put(std::uint32_t(field.size()));
-  std::vector<float> xyz(3 * t.ids.size());
+  // The positions as float32, written straight into the message.
+  const std::size_t at = w.out.size();
+  w.out.resize(at + 12 * t.ids.size());
+  auto* xyz = reinterpret_cast<unsigned char*>(w.out.data() + at);
   const Vec3* x = m.particles.position.data();
-  for (std::size_t k = 0; k < t.ids.size(); ++k)
-    for (int c = 0; c < 3; ++c) xyz[3 * k + c] = float(x[t.ids[k]][c]);
-  w.put(xyz);
+  for (std::size_t k = 0; k < t.ids.size(); ++k) {
+    const float v[3] = {float(x[t.ids[k]][0]), float(x[t.ids[k]][1]), float(x[t.ids[k]][2])};
+    std::memcpy(xyz + 12 * k, v, 12);
+  }
   w.put(field);
-  return std::move(w.out);
+  out.swap(w.out);
+}
+
+std::string encode_frame(const Model& m, const Solver& s, const Topology& t, const std::vector<float>& field) {
+  std::string out;
+  encode_frame(m, s, t, field, out);
+  return out;
+}
+
+bool Topology::same_drawing(const Topology& o) const {
+  return ids == o.ids && states == o.states && locks == o.locks && blocks == o.blocks && block_kind == o.block_kind &&
+         block_form == o.block_form && edge_kind == o.edge_kind && edges == o.edges && edge_block == o.edge_block &&
+         rest_length == o.rest_length && triangles == o.triangles && triangle_block == o.triangle_block;
 }
 
 }  // namespace tendril::studio

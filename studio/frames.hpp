@@ -48,11 +48,17 @@ struct Topology {
   std::vector<std::uint32_t> triangles;  // triples of indices into ids
   std::vector<std::uint32_t> triangle_block;
   std::vector<std::uint32_t> index_of;  // ParticleId -> index into ids (kNone if not drawn)
+  // The same drawing (everything the page receives but the revision tag):
+  // a change that moved the model's revision without changing what is
+  // drawn (a goal moved by a drag) sends no new topology.
+  bool same_drawing(const Topology& o) const;
 };
 
 Topology topology_of(const Model& m);
 std::string encode(const Topology& t);
-// The frame of the model's current positions in t's particle order.
+// The frame of the model's current positions in t's particle order, into
+// out (its storage reused: a live session recycles its frame buffers).
+void encode_frame(const Model& m, const Solver& s, const Topology& t, const std::vector<float>& field, std::string& out);
 std::string encode_frame(const Model& m, const Solver& s, const Topology& t, const std::vector<float>& field);
 
 }  // namespace tendril::studio

@@ -43,7 +43,10 @@ Server::Server(ServerOptions options, Handler on_command, std::function<bool(con
   const std::string listen = options_.host + ":" + std::to_string(options_.port);
   const char* config[] = {"listening_ports", listen.c_str(), "document_root", options_.web_dir.c_str(),
                           "num_threads", "16", "enable_directory_listing", "no",
-                          "websocket_timeout_ms", "3600000", "access_control_allow_origin", "", nullptr};
+                          "websocket_timeout_ms", "3600000", "access_control_allow_origin", "",
+                          // Frames go out as soon as written: with Nagle's algorithm a small
+                          // message waits for the page's delayed ACK (40 ms) behind the last.
+                          "tcp_nodelay", "1", nullptr};
   mg_init_library(0);
   mg_callbacks callbacks{};
   callbacks.log_message = [](const mg_connection*, const char*) { return 1; };  // errors go to replies, not stdout
@@ -118,7 +121,7 @@ void Server::on_close(const mg_connection* conn, void* self) {
     c = s.clients_[it->second];
     s.clients_.erase(it->second);
     s.ids_.erase(it);
-    s.update_rate();
+    s.update_wants();
   }
   std::lock_guard<std::mutex> writing(c->writing);  // a write in progress finishes first
   c->closed = true;
@@ -157,8 +160,9 @@ void Server::reply_error(ClientId id, const std::string& message) {
   send(id, json{{"type", "error"}, {"message", message}}.dump(), false);
 }
 
-// Only JSON objects naming a defined command get through; "rate" is the
-// server's own (the frames a tab wants per second).
+// Only JSON objects naming a defined command get through; "rate" (the
+// frames a tab wants per second) and "ready" (it took the last one) are the
+// server's own.
 void Server::receive(ClientId id, const std::string& text) {
   json body = json::parse(text, nullptr, false);
   if (body.is_discarded()) return reply_error(id, "not JSON: ignored");
@@ -170,17 +174,34 @@ void Server::receive(ClientId id, const std::string& text) {
       return reply_error(id, "rate: 'fps' must be a number >= 0");
     std::lock_guard<std::mutex> lock(mutex_);
     if (auto it = clients_.find(id); it != clients_.end()) it->second->rate = std::min(options_.max_rate, body["fps"].get<double>());
-    update_rate();
+    update_wants();
+    ++news_;
+    wake_.notify_all();
+    return;
+  }
+  if (name == "ready") {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (auto it = clients_.find(id); it != clients_.end()) it->second->ready = true;
+      update_wants();
+      ++news_;
+    }
+    wake_.notify_all();
     return;
   }
   if (!is_command_(name)) return reply_error(id, "unknown command '" + name + "'");
   on_command_(id, std::move(body));
 }
 
-void Server::update_rate() {
-  double r = 0;
-  for (const auto& [id, c] : clients_) r = std::max(r, c->rate);
-  rate_ = r;
+void Server::update_wants() {
+  auto due = std::chrono::steady_clock::time_point::max();
+  for (const auto& [id, c] : clients_)
+    if (c->rate > 0 && c->ready) due = std::min(due, c->next_frame);
+  frame_due_ = due.time_since_epoch().count();
+}
+
+bool Server::wants_frame() const {
+  return std::chrono::steady_clock::now().time_since_epoch().count() >= frame_due_.load(std::memory_order_relaxed);
 }
 
 void Server::topology(std::shared_ptr<const std::string> bytes) {
@@ -188,6 +209,7 @@ void Server::topology(std::shared_ptr<const std::string> bytes) {
     std::lock_guard<std::mutex> lock(mutex_);
     topology_ = std::move(bytes);
     ++topology_seq_;
+    ++news_;
   }
   wake_.notify_all();
 }
@@ -198,6 +220,7 @@ void Server::frame(std::shared_ptr<const std::string> bytes, bool urgent) {
     frame_ = std::move(bytes);
     frame_urgent_ = urgent;
     ++frame_seq_;
+    ++news_;
   }
   wake_.notify_all();
 }
@@ -208,6 +231,7 @@ void Server::send(ClientId to, const std::string& bytes, bool binary) {
     auto it = clients_.find(to);
     if (it == clients_.end()) return;
     it->second->queue.push_back({std::make_shared<const std::string>(bytes), binary});
+    ++news_;
   }
   wake_.notify_all();
 }
@@ -217,16 +241,26 @@ void Server::broadcast(const std::string& text) {
     std::lock_guard<std::mutex> lock(mutex_);
     auto msg = std::make_shared<const std::string>(text);
     for (auto& [id, c] : clients_) c->queue.push_back({msg, false});
+    ++news_;
   }
   wake_.notify_all();
 }
 
 // The one writer: each tab's queued replies in order, then the topology when
-// it has an older one, then the latest frame when its rate allows.
+// it has an older one, then the latest frame when it took the last and its
+// rate allows. It sleeps until there is news, or until a frame it holds
+// back falls due.
 void Server::sender() {
   std::unique_lock<std::mutex> lock(mutex_);
-  while (!stopping_) {
-    wake_.wait_for(lock, std::chrono::milliseconds(5));
+  std::uint64_t seen = 0;
+  auto due = std::chrono::steady_clock::time_point::max();
+  while (true) {
+    const auto news = [&] { return stopping_ || news_ != seen; };
+    if (due == std::chrono::steady_clock::time_point::max()) wake_.wait(lock, news);
+    else wake_.wait_until(lock, due, news);
+    if (stopping_) break;
+    seen = news_;
+    due = std::chrono::steady_clock::time_point::max();
     const auto now = std::chrono::steady_clock::now();
     std::vector<std::pair<std::shared_ptr<Client>, std::vector<Message>>> work;
     for (auto& [id, c] : clients_) {
@@ -236,13 +270,19 @@ void Server::sender() {
         out.push_back({topology_, true});
         c->topology_sent = topology_seq_;
       }
-      if (frame_ && c->rate > 0 && c->frame_sent != frame_seq_ && (now >= c->next_frame || frame_urgent_)) {
-        out.push_back({frame_, true});
-        c->frame_sent = frame_seq_;
-        c->next_frame = now + std::chrono::microseconds(std::int64_t(1e6 / c->rate));
+      if (frame_ && c->rate > 0 && c->ready && c->frame_sent != frame_seq_) {
+        if (now >= c->next_frame || frame_urgent_) {
+          out.push_back({frame_, true});
+          c->frame_sent = frame_seq_;
+          c->ready = false;
+          c->next_frame = now + std::chrono::microseconds(std::int64_t(1e6 / c->rate));
+        } else {
+          due = std::min(due, c->next_frame);
+        }
       }
       if (!out.empty()) work.push_back({c, std::move(out)});
     }
+    update_wants();
     lock.unlock();
     for (auto& [c, messages] : work) {
       std::lock_guard<std::mutex> writing(c->writing);

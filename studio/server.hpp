@@ -15,6 +15,7 @@
 #include <deque>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -49,7 +50,7 @@ class Server : public Outbox {
   void frame(std::shared_ptr<const std::string> bytes, bool urgent) override;
   void send(ClientId to, const std::string& bytes, bool binary) override;
   void broadcast(const std::string& text) override;
-  double frame_rate() const override { return rate_.load(); }
+  bool wants_frame() const override;
 
  private:
   struct Message {
@@ -59,6 +60,7 @@ class Server : public Outbox {
   struct Client {
     mg_connection* conn = nullptr;
     double rate = 0;  // frames per second asked; 0 until the page says
+    bool ready = true;  // it took the last frame it was sent ("ready")
     std::chrono::steady_clock::time_point next_frame{};
     std::uint64_t topology_sent = 0, frame_sent = 0;  // sequence numbers of what it has
     std::deque<Message> queue;
@@ -76,7 +78,7 @@ class Server : public Outbox {
   void receive(ClientId id, const std::string& text);
   void reply_error(ClientId id, const std::string& message);
   void sender();
-  void update_rate();  // under mutex_
+  void update_wants();  // under mutex_: when the next frame is due
   bool token_ok(const char* query) const;
 
   ServerOptions options_;
@@ -93,8 +95,11 @@ class Server : public Outbox {
   std::shared_ptr<const std::string> topology_, frame_;
   std::uint64_t topology_seq_ = 0, frame_seq_ = 0;
   bool frame_urgent_ = false;
-  std::atomic<double> rate_{0};
+  // The earliest time a tab is due a frame (steady clock ns; max: none):
+  // the solver thread reads it after every step without a lock.
+  std::atomic<std::int64_t> frame_due_{std::numeric_limits<std::int64_t>::max()};
   bool stopping_ = false;
+  std::uint64_t news_ = 0;  // counts what the sender has to look at
   std::thread sender_;
 };
 

@@ -147,6 +147,7 @@ void Session::bind(lua_State* L, int model_index) {
   }
   model_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
   topology_model_revision_ = ~0ull;
+  shown_.stale = true;
   out_.broadcast(json{{"type", "reload"}}.dump());  // pages ask hello again: new palette, params
 }
 
@@ -296,21 +297,36 @@ void Session::publish(bool force, bool urgent) {
 }
 
 void Session::build_frame(bool force, bool urgent) {
-  const double rate = out_.frame_rate();
-  if (rate <= 0 && !force) return;
-  const auto now = std::chrono::steady_clock::now();
-  if (!force && now < next_frame_) return;
-  next_frame_ = now + std::chrono::microseconds(std::int64_t(1e6 / std::max(rate, 1.0)));
+  if (!force && !out_.wants_frame()) return;
   const lua::Scene& s = scene_of(L_, model_ref_);
   if (s.model.revision != topology_model_revision_) {
-    topology_ = topology_of(s.model);
-    topology_.revision = ++topology_tag_;
+    Topology t = topology_of(s.model);
     topology_model_revision_ = s.model.revision;
-    out_.topology(std::make_shared<const std::string>(encode(topology_)));
+    if (shown_.stale || !t.same_drawing(topology_)) {
+      topology_ = std::move(t);
+      topology_.revision = ++topology_tag_;
+      out_.topology(std::make_shared<const std::string>(encode(topology_)));
+    }
   }
+  if (!force && !shown_.stale && shown_.steps == s.solver.steps() && shown_.topology == topology_tag_) return;
+  shown_ = {s.solver.steps(), topology_tag_, false};
   std::vector<float> values;
   if (const Field* f = find_field(field_)) values = f->values(s.model, topology_);
-  out_.frame(std::make_shared<const std::string>(encode_frame(s.model, s.solver, topology_, values)), urgent);
+  std::shared_ptr<std::string> frame = free_frame_buffer();
+  encode_frame(s.model, s.solver, topology_, values, *frame);
+  out_.frame(std::move(frame), urgent);
+}
+
+// A frame is written into a buffer the server no longer holds (its only
+// owner is this list), so a live session allocates none after the first few.
+std::shared_ptr<std::string> Session::free_frame_buffer() {
+  for (const auto& b : frame_buffers_)
+    if (b.use_count() == 1) {
+      std::atomic_thread_fence(std::memory_order_acquire);  // the sender's last read of it happened before
+      return b;
+    }
+  frame_buffers_.push_back(std::make_shared<std::string>());
+  return frame_buffers_.back();
 }
 
 std::size_t Session::production_count(const lua::Scene& s) {
@@ -377,14 +393,14 @@ void Session::go_to(const JournalPoint& p) {
   drag_ = {};
   converged_ = false;
   topology_model_revision_ = ~0ull;
-  next_frame_ = {};
+  shown_.stale = true;
 }
 
 // --- the commands -------------------------------------------------------------
 
 json Session::cmd_hello(lua_State* L, const json&) {
-  next_frame_ = {};
   topology_model_revision_ = ~0ull;  // the new page needs the topology
+  shown_.stale = true;
   return ok(hello(L));
 }
 
@@ -410,10 +426,24 @@ json Session::cmd_step(lua_State*, const json& c) {
   return ok();
 }
 
+// A drag changes goals only, which the page does not draw: the model's
+// revision moves, the topology the pages have stays (no topology_of per
+// mouse move).
+struct Session::GoalsOnly {
+  GoalsOnly(Session& s, const Model& m) : session(s), model(m), current(s.topology_model_revision_ == m.revision) {}
+  ~GoalsOnly() {
+    if (current) session.topology_model_revision_ = model.revision;
+  }
+  Session& session;
+  const Model& model;
+  const bool current;
+};
+
 // A goal while the mouse is held (thesis 5.4.1.1): an anchor at the cursor,
 // a hundred times as stiff as the particle's elements, moved by replacing it.
 json Session::cmd_drag(lua_State* L, const json& c) {
   const json p = particle_arg(c);
+  const GoalsOnly drawing_unchanged(*this, scene_of(L, model_ref_).model);
   if (!c.contains("to") || !c["to"].is_array() || c["to"].size() != 3) return refused("'to' must be [x, y, z]");
   for (const json& v : c["to"])
     if (!v.is_number() || !std::isfinite(v.get<double>())) return refused("'to' must hold three finite numbers");
@@ -436,6 +466,7 @@ json Session::cmd_drag(lua_State* L, const json& c) {
 
 json Session::cmd_release(lua_State* L, const json&) {
   if (!drag_.active) return ok();
+  const GoalsOnly drawing_unchanged(*this, scene_of(L, model_ref_).model);
   drag_.active = false;
   converged_ = false;
   return from(call_method(L, model_ref_, "remove_goal", json::array({drag_.goal})));
@@ -508,7 +539,7 @@ json Session::cmd_field(lua_State*, const json& c) {
   const std::string name = c.value("name", "");
   if (!name.empty() && !find_field(name)) return refused("no colour map '" + name + "'");
   field_ = name;
-  next_frame_ = {};
+  shown_.stale = true;
   return ok();
 }
 

@@ -38,7 +38,7 @@ class Outbox {
   virtual void frame(std::shared_ptr<const std::string> bytes, bool urgent) = 0;
   virtual void send(ClientId to, const std::string& bytes, bool binary) = 0;
   virtual void broadcast(const std::string& text) = 0;
-  virtual double frame_rate() const = 0;  // the fastest rate a page asked for; 0: nobody watches
+  virtual bool wants_frame() const = 0;  // a page is due a frame (cheap: called after every step)
 };
 
 struct SessionOptions {
@@ -93,6 +93,7 @@ class Session {
   json hello(lua_State* L) const;
   void go_to(const JournalPoint& p);  // restore, then a fresh topology
 
+  struct GoalsOnly;
   json cmd_hello(lua_State*, const json&);
   json cmd_pause(lua_State*, const json&);
   json cmd_resume(lua_State*, const json&);
@@ -132,7 +133,15 @@ class Session {
   Topology topology_;
   std::uint64_t topology_model_revision_ = ~0ull;
   std::uint32_t topology_tag_ = 0;
-  std::chrono::steady_clock::time_point next_frame_{};
+  // What the last frame showed: a page that is due a frame gets none while
+  // the solver has not stepped and nothing else moved (paused, at rest).
+  struct {
+    std::uint64_t steps = ~0ull;
+    std::uint32_t topology = 0;
+    bool stale = true;  // a page said hello, a colour map changed, the model was rewound
+  } shown_;
+  std::vector<std::shared_ptr<std::string>> frame_buffers_;  // recycled once the server let go of them
+  std::shared_ptr<std::string> free_frame_buffer();
   std::chrono::steady_clock::time_point next_step_{};  // the speed limit
   void pace();
   std::vector<JournalPoint> undo_, snapshots_;

@@ -68,6 +68,7 @@ await run('draw: every state', scene('tests/studio/states.lua'), ['--speed', '0'
   const r = checkColours(await sampleStates(page), 'states');
   const want = ['full-lock', 'isolated', 'lock', 'passive', 'shared', 'simple'];
   check(want.every((s) => r.seen.includes(s)), `every thesis state is drawn in its colour: ${r.seen.join(', ')} (${r.matched} particles)`);
+  check(page.problems.length === 0, 'no error on the page: ' + page.problems.join('; '));
   const hasSurface = await page.evaluate(() => studio.topology.triangles.length / 3);
   check(hasSurface === 18, `the 3 x 3 patch is drawn as 18 triangles (${hasSurface})`);
 });

@@ -17,9 +17,24 @@ export const shots = process.env.TENDRIL_SCREENSHOTS || path.join(os.tmpdir(), '
 
 export function scene(name) { return path.join(root, name); }
 
+// The folders a test makes in /tmp (studio outputs, browser profiles) go when
+// the process ends; a failed test's studio outputs stay, to look at.
+const made = [];
+function tempDir(prefix, keepOnFailure) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), prefix));
+  made.push({ dir, keepOnFailure });
+  return dir;
+}
+process.on('exit', (code) => {
+  for (const { dir, keepOnFailure } of made) {
+    if (code !== 0 && keepOnFailure) { console.error(`kept ${dir}`); continue; }
+    try { fs.rmSync(dir, { recursive: true, force: true, maxRetries: 5, retryDelay: 100 }); } catch { /* still in use: left */ }
+  }
+});
+
 // Starts `tendril studio SCENE ARGS...`; resolves once it printed its URL.
 export async function startStudio(scenePath, args = []) {
-  const out = fs.mkdtempSync(path.join(os.tmpdir(), 'tendril-studio-'));
+  const out = tempDir('tendril-studio-', true);
   const proc = spawn(tendril, ['studio', scenePath, '--port', '0', '--out', out, ...args], { stdio: ['ignore', 'pipe', 'pipe'] });
   let log = '';
   proc.stderr.on('data', (d) => { log += d; });
@@ -48,7 +63,7 @@ export async function startStudio(scenePath, args = []) {
 // A fresh headless Chromium with the flags this machine needs (no network
 // beyond loopback, a new profile every time).
 export async function openBrowser() {
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'tendril-chromium-'));
+  const profile = tempDir('tendril-chromium-', false);
   const context = await chromium.launchPersistentContext(profile, {
     executablePath: '/usr/bin/chromium', headless: true, viewport: { width: 1200, height: 800 },
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
@@ -79,6 +94,24 @@ export async function screenshot(page, name) {
   const file = path.join(shots, name);
   await page.screenshot({ path: file });
   return file;
+}
+
+// The colours [r, g, b] at CSS pixels [x, y] of a screenshot of the page
+// (what the page shows, panels and compositing included, not the canvas
+// alone), decoded by the browser itself.
+export async function screenshotPixels(page, points) {
+  const png = (await page.screenshot()).toString('base64');
+  return page.evaluate(async ([png, points]) => {
+    const img = new Image();
+    img.src = 'data:image/png;base64,' + png;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width;
+    c.height = img.height;
+    const g = c.getContext('2d');
+    g.drawImage(img, 0, 0);
+    return points.map(([x, y]) => Array.from(g.getImageData(x, y, 1, 1).data.slice(0, 3)));
+  }, [png, points]);
 }
 
 export function check(condition, message) {

@@ -6,7 +6,7 @@
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { check, openPage, run, scene, screenshot, tendril, until } from './harness.mjs';
+import { check, openPage, run, scene, screenshot, screenshotPixels, tendril, until } from './harness.mjs';
 
 // A free (unlocked) particle of the given state at least 14 px from all others on screen,
 // inside the drawing (not under a panel).
@@ -95,6 +95,13 @@ await run('interact', scene('scripts/examples/grow.lua'), ['--speed', '0'], asyn
   const why = await page.textContent('#message');
   check(/not applicable: particle \d+ is child/.test(why), `rule 2 on a child particle is refused, and the page says why: "${why}"`);
   await screenshot(page, 'studio-refused.png');
+  // Below the settings panel the page shows the canvas (black while a rule
+  // is armed), not a white area the compositor left.
+  const below = [];
+  for (let x = 960; x <= 1170; x += 70) for (let y = 460; y <= 740; y += 70) below.push([x, y]);
+  const [shown, drawn] = [await screenshotPixels(page, below), await page.evaluate((pts) => pts.map(([x, y]) => studio.pixel(x, y)), below)];
+  const worst = Math.max(...shown.map((c, i) => Math.max(...c.map((v, k) => Math.abs(v - drawn[i][k])))));
+  check(worst <= 24, `below the settings panel the screenshot shows what the canvas drew (largest difference ${worst} of 255)`);
 
   // --- timeline --------------------------------------------------------------------------------
   const live = await page.evaluate(() => studio.topology.count);

@@ -3,7 +3,7 @@
 // surfaces, edges coloured by a result field with a legend; an orbit camera.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
-import { EDGE_BEAM, EDGE_CABLE, STATE_COLOURS } from './protocol.js';
+import { EDGE_BEAM, EDGE_CABLE, EDGE_PATCH, STATE_COLOURS } from './protocol.js';
 
 const BEAM = new THREE.Color(0x1f3a93), CABLE = new THREE.Color(0x555555), PATCH = new THREE.Color(0x8a8a8a);
 
@@ -19,10 +19,27 @@ function colourOf(t, diverging, out) {
   return out.setRGB(p[0] + f * (q[0] - p[0]), p[1] + f * (q[1] - p[1]), p[2] + f * (q[2] - p[2]));
 }
 
+// Software WebGL (SwiftShader, llvmpipe: no GPU, e.g. a headless browser)
+// pays for multisampling on the CPU, beside the solver: draw without it there.
+function softwareGL() {
+  const gl = document.createElement('canvas').getContext('webgl2');
+  if (!gl) return false;
+  const info = gl.getExtension('WEBGL_debug_renderer_info');
+  const name = info ? String(gl.getParameter(info.UNMASKED_RENDERER_WEBGL)) : '';
+  const lose = gl.getExtension('WEBGL_lose_context');
+  if (lose) lose.loseContext();
+  return /swiftshader|llvmpipe|softpipe|software/i.test(name);
+}
+
+// Particles drawn this many pixels wide: 6 up to 2000, smaller beyond (a
+// dense net is a carpet of dots either way; fewer pixels draw faster).
+function autoPointSize(n) { return Math.max(2, Math.min(6, Math.round(6 * Math.sqrt(2000 / Math.max(n, 1))))); }
+
 export class View3D {
   constructor(container) {
     this.container = container;
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.software = softwareGL();
+    this.renderer = new THREE.WebGLRenderer({ antialias: !this.software, preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(1);
     this.renderer.setClearColor(0xffffff);
     container.appendChild(this.renderer.domElement);
@@ -35,12 +52,13 @@ export class View3D {
     const sun = new THREE.DirectionalLight(0xffffff, 0.8);
     sun.position.set(3, -5, 10);
     this.scene.add(sun);
-    this.pointSize = 6;
+    this.pointSize = null;  // null: autoPointSize of the particle count
     this.topology = null;
     this.frame = null;
     this.field = null;
     this.fitted = false;
     this.selected = new Set();
+    this.objects = [];
     this.resize();
     window.addEventListener('resize', () => this.resize());
   }
@@ -50,64 +68,101 @@ export class View3D {
     this.renderer.setSize(w, h);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+    this.changed = true;
   }
 
   setBackground(dark) { this.renderer.setClearColor(dark ? 0x000000 : 0xffffff); this.changed = true; }
 
   clear() {
-    for (const o of [this.points, this.lines, this.dashed, this.mesh]) {
-      if (!o) continue;
+    for (const o of this.objects) {
       this.scene.remove(o);
       o.geometry.dispose();
+      o.material.dispose();
     }
-    this.points = this.lines = this.dashed = this.mesh = null;
+    this.objects = [];
+    this.points = this.mesh = this.fieldLines = this.cableLines = this.slackLines = null;
   }
 
+  add(object, order = 0) {
+    object.frustumCulled = false;  // no bounding sphere to recompute every frame
+    object.renderOrder = order;
+    this.scene.add(object);
+    this.objects.push(object);
+    return object;
+  }
+
+  // One position buffer, uploaded once a frame, is shared by the particles,
+  // the beams and patch bars (index lists of their edges) and the patch
+  // surfaces; only cables (solid or dashed when slack) and a colour map's
+  // edges (a colour per edge) are written out edge by edge.
   setTopology(t) {
     this.clear();
     this.topology = t;
     this.frame = null;
-    const n = t.count;
+    const n = t.count, ne = t.edgeKind.length;
     this.positions = new Float32Array(3 * n);
+    this.position = new THREE.BufferAttribute(this.positions, 3).setUsage(THREE.DynamicDrawUsage);
     const pg = new THREE.BufferGeometry();
-    pg.setAttribute('position', new THREE.BufferAttribute(this.positions, 3));
+    pg.setAttribute('position', this.position);
     this.pointColours = new Float32Array(3 * n);
     pg.setAttribute('color', new THREE.BufferAttribute(this.pointColours, 3));
     // On top of everything: transparent, so drawn after the patches.
-    this.points = new THREE.Points(pg, new THREE.PointsMaterial({ size: this.pointSize, sizeAttenuation: false, vertexColors: true, depthTest: false, transparent: true }));
-    this.points.renderOrder = 2;
+    const size = this.pointSize ?? autoPointSize(n);
+    this.points = this.add(new THREE.Points(pg, new THREE.PointsMaterial({ size, sizeAttenuation: false, vertexColors: true, depthTest: false, transparent: true })), 2);
     this.paintStates();
-    this.changed = true;
-    const ne = t.edgeKind.length;
-    this.edgePositions = new Float32Array(6 * ne);
-    this.edgeColours = new Float32Array(6 * ne);
-    const lg = new THREE.BufferGeometry();
-    lg.setAttribute('position', new THREE.BufferAttribute(this.edgePositions, 3));
-    lg.setAttribute('color', new THREE.BufferAttribute(this.edgeColours, 3));
-    this.lines = new THREE.LineSegments(lg, new THREE.LineBasicMaterial({ vertexColors: true }));
-    this.slackPositions = new Float32Array(6 * ne);
-    const dg = new THREE.BufferGeometry();
-    dg.setAttribute('position', new THREE.BufferAttribute(this.slackPositions, 3));
-    this.slackDistances = new Float32Array(2 * ne);
-    dg.setAttribute('lineDistance', new THREE.BufferAttribute(this.slackDistances, 1));
-    this.dashed = new THREE.LineSegments(dg, new THREE.LineDashedMaterial({ color: 0x777777, dashSize: 0.05, gapSize: 0.04 }));
-    this.scene.add(this.lines, this.dashed, this.points);
+    const byKind = [[], [], []], cables = [];
+    for (let e = 0; e < ne; ++e) {
+      byKind[t.edgeKind[e]].push(t.edges[2 * e], t.edges[2 * e + 1]);
+      if (t.edgeKind[e] === EDGE_CABLE) cables.push(e);
+    }
+    this.kindLines = [];
+    for (const [kind, colour] of [[EDGE_BEAM, BEAM], [EDGE_PATCH, PATCH]]) {
+      if (!byKind[kind].length) continue;
+      const g = new THREE.BufferGeometry();
+      g.setAttribute('position', this.position);
+      g.setIndex(new THREE.BufferAttribute(new Uint32Array(byKind[kind]), 1));
+      this.kindLines.push(this.add(new THREE.LineSegments(g, new THREE.LineBasicMaterial({ color: colour }))));
+    }
+    this.cables = Uint32Array.from(cables);
+    if (cables.length) {
+      this.cableLines = this.add(this.edgeLines(cables.length, false, new THREE.LineBasicMaterial({ color: CABLE })));
+      this.slackLines = this.add(this.edgeLines(cables.length, true, new THREE.LineDashedMaterial({ color: 0x777777, dashSize: 0.05, gapSize: 0.04 })));
+    }
     if (t.triangles.length) {
       const mg = new THREE.BufferGeometry();
-      mg.setAttribute('position', new THREE.BufferAttribute(this.positions, 3));
+      mg.setAttribute('position', this.position);
       mg.setIndex(new THREE.BufferAttribute(t.triangles, 1));
-      this.mesh = new THREE.Mesh(mg, new THREE.MeshLambertMaterial({ color: PATCH, side: THREE.DoubleSide, transparent: true, opacity: 0.55, depthWrite: false }));
-      this.scene.add(this.mesh);
+      // Flat shading takes the normal from the triangle in the shader: no
+      // vertex normals to recompute and upload every frame.
+      this.mesh = this.add(new THREE.Mesh(mg, new THREE.MeshLambertMaterial({ color: PATCH, side: THREE.DoubleSide, transparent: true, opacity: 0.55, depthWrite: false, flatShading: true })), 1);
     }
+    this.changed = true;
+  }
+
+  // Lines written edge by edge (count edges at most): positions, and a
+  // colour per vertex or the distance along each (for dashes).
+  edgeLines(count, dashed, material) {
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(6 * count), 3).setUsage(THREE.DynamicDrawUsage));
+    if (dashed) g.setAttribute('lineDistance', new THREE.BufferAttribute(new Float32Array(2 * count), 1).setUsage(THREE.DynamicDrawUsage));
+    else if (material.vertexColors) g.setAttribute('color', new THREE.BufferAttribute(new Float32Array(6 * count), 3).setUsage(THREE.DynamicDrawUsage));
+    g.setDrawRange(0, 0);
+    return new THREE.LineSegments(g, material);
   }
 
   paintStates() {
-    const t = this.topology, c = new THREE.Color();
+    const t = this.topology, c = new THREE.Color(), out = this.pointColours;
     for (let k = 0; k < t.count; ++k) {
       c.setHex(this.selected.has(t.ids[k]) ? 0xff00ff : STATE_COLOURS[t.states[k]] ?? 0);
-      this.pointColours.set([c.r, c.g, c.b], 3 * k);
+      out[3 * k] = c.r; out[3 * k + 1] = c.g; out[3 * k + 2] = c.b;
     }
     if (this.points) this.points.geometry.attributes.color.needsUpdate = true;
+    this.changed = true;
+  }
+
+  setPointSize(size) {
+    this.pointSize = size;
+    if (this.points) this.points.material.size = size ?? autoPointSize(this.topology.count);
     this.changed = true;
   }
 
@@ -118,9 +173,8 @@ export class View3D {
     if (!t || f.revision !== t.revision || f.count !== t.count) return false;
     this.frame = f;
     this.positions.set(f.positions);
-    this.points.geometry.attributes.position.needsUpdate = true;
-    this.points.geometry.computeBoundingSphere();
-    const p = f.positions, ne = t.edgeKind.length, c = new THREE.Color();
+    this.position.needsUpdate = true;
+    const p = f.positions, ne = t.edgeKind.length;
     let range = 0, lo = Infinity, hi = -Infinity;
     const values = this.field && f.field && f.field.length === ne ? f.field : null;
     if (values) {
@@ -129,43 +183,57 @@ export class View3D {
       range = Math.max(Math.abs(lo), Math.abs(hi)) || 1;
     }
     const diverging = values && lo < 0 && hi > 0;
-    let solid = 0, slack = 0;
-    for (let e = 0; e < ne; ++e) {
-      const a = 3 * t.edges[2 * e], b = 3 * t.edges[2 * e + 1];
-      const dx = p[b] - p[a], dy = p[b + 1] - p[a + 1], dz = p[b + 2] - p[a + 2];
-      const len = Math.hypot(dx, dy, dz);
-      if (t.edgeKind[e] === EDGE_CABLE && len < t.restLength[e] * (1 - 1e-6) && !values) {
-        this.slackPositions.set([p[a], p[a + 1], p[a + 2], p[b], p[b + 1], p[b + 2]], 6 * slack);
-        this.slackDistances[2 * slack] = 0;
-        this.slackDistances[2 * slack + 1] = len;
-        ++slack;
-        continue;
-      }
-      this.edgePositions.set([p[a], p[a + 1], p[a + 2], p[b], p[b + 1], p[b + 2]], 6 * solid);
-      if (values && Number.isFinite(values[e])) colourOf(diverging ? values[e] / range : (values[e] - lo) / ((hi - lo) || 1), diverging, c);
-      else c.copy(t.edgeKind[e] === EDGE_BEAM ? BEAM : t.edgeKind[e] === EDGE_CABLE ? CABLE : PATCH);
-      this.edgeColours.set([c.r, c.g, c.b, c.r, c.g, c.b], 6 * solid);
-      ++solid;
-    }
-    this.lines.geometry.setDrawRange(0, 2 * solid);
-    this.lines.geometry.attributes.position.needsUpdate = true;
-    this.lines.geometry.attributes.color.needsUpdate = true;
-    this.dashed.geometry.setDrawRange(0, 2 * slack);
-    this.dashed.geometry.attributes.position.needsUpdate = true;
-    this.dashed.geometry.attributes.lineDistance.needsUpdate = true;
-    if (this.mesh) {
-      this.mesh.geometry.attributes.position.needsUpdate = true;
-      this.mesh.geometry.computeVertexNormals();
-      this.mesh.geometry.computeBoundingSphere();
-    }
+    for (const o of this.kindLines) o.visible = !values;
+    if (this.cableLines) { this.cableLines.visible = !values; this.slackLines.visible = !values; }
+    if (values) this.paintField(values, diverging, lo, hi, range);
+    else if (this.cables.length) this.placeCables(p);
     this.legend = values ? { lo, hi, diverging, range } : null;
     this.changed = true;
     if (!this.fitted && t.count) this.fit();
     return true;
   }
 
+  // Taut cables solid, slack ones (shorter than their rest length) dashed.
+  placeCables(p) {
+    const t = this.topology;
+    const solid = this.cableLines.geometry, slack = this.slackLines.geometry;
+    const sp = solid.attributes.position.array, dp = slack.attributes.position.array, dd = slack.attributes.lineDistance.array;
+    let ns = 0, nd = 0;
+    for (const e of this.cables) {
+      const a = 3 * t.edges[2 * e], b = 3 * t.edges[2 * e + 1];
+      const len = Math.hypot(p[b] - p[a], p[b + 1] - p[a + 1], p[b + 2] - p[a + 2]);
+      const isSlack = len < t.restLength[e] * (1 - 1e-6);
+      const out = isSlack ? dp : sp, at = 6 * (isSlack ? nd : ns);
+      for (let c = 0; c < 3; ++c) { out[at + c] = p[a + c]; out[at + 3 + c] = p[b + c]; }
+      if (isSlack) { dd[2 * nd] = 0; dd[2 * nd + 1] = len; ++nd; } else ++ns;
+    }
+    solid.setDrawRange(0, 2 * ns);
+    solid.attributes.position.needsUpdate = true;
+    slack.setDrawRange(0, 2 * nd);
+    slack.attributes.position.needsUpdate = true;
+    slack.attributes.lineDistance.needsUpdate = true;
+  }
+
+  // Every edge in the colour of its value (the kind's colour where the
+  // quantity does not apply: NaN).
+  paintField(values, diverging, lo, hi, range) {
+    const t = this.topology, ne = t.edgeKind.length, p = this.positions, c = new THREE.Color();
+    if (!this.fieldLines) this.fieldLines = this.add(this.edgeLines(ne, false, new THREE.LineBasicMaterial({ vertexColors: true })));
+    const g = this.fieldLines.geometry, xyz = g.attributes.position.array, rgb = g.attributes.color.array;
+    for (let e = 0; e < ne; ++e) {
+      const a = 3 * t.edges[2 * e], b = 3 * t.edges[2 * e + 1];
+      if (Number.isFinite(values[e])) colourOf(diverging ? values[e] / range : (values[e] - lo) / ((hi - lo) || 1), diverging, c);
+      else c.copy(t.edgeKind[e] === EDGE_BEAM ? BEAM : t.edgeKind[e] === EDGE_CABLE ? CABLE : PATCH);
+      for (let k = 0; k < 3; ++k) { xyz[6 * e + k] = p[a + k]; xyz[6 * e + 3 + k] = p[b + k]; }
+      rgb[6 * e] = rgb[6 * e + 3] = c.r; rgb[6 * e + 1] = rgb[6 * e + 4] = c.g; rgb[6 * e + 2] = rgb[6 * e + 5] = c.b;
+    }
+    g.setDrawRange(0, 2 * ne);
+    g.attributes.position.needsUpdate = true;
+    g.attributes.color.needsUpdate = true;
+  }
+
   fit() {
-    const box = new THREE.Box3().setFromBufferAttribute(this.points.geometry.attributes.position);
+    const box = new THREE.Box3().setFromBufferAttribute(this.position);
     const centre = box.getCenter(new THREE.Vector3());
     const size = Math.max(box.getSize(new THREE.Vector3()).length(), 0.5);
     this.controls.target.copy(centre);
@@ -217,6 +285,7 @@ export class View3D {
       const r = this.renderer.domElement.getBoundingClientRect();
       const ray = new THREE.Raycaster();
       ray.setFromCamera(new THREE.Vector2(x / r.width * 2 - 1, 1 - y / r.height * 2), this.camera);
+      this.mesh.geometry.computeBoundingSphere();  // the raycaster tests it first
       const hit = ray.intersectObject(this.mesh)[0];
       if (hit) return { type: 'block', id: t.blocks[t.triangleBlock[hit.faceIndex]], block: t.triangleBlock[hit.faceIndex] };
     }

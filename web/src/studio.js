@@ -27,7 +27,7 @@ const studio = window.studio = {
     const k = t.indexOf.get(id);
     return [f.positions[3 * k], f.positions[3 * k + 1], f.positions[3 * k + 2]];
   },
-  dragLatency: [],
+  dragLatency: [], drawLatency: [],  // ms from a drag to the first frame showing it: received, drawn
   // The drawn colour at canvas pixel (x, y), as [r, g, b] 0-255.
   pixel: (x, y) => {
     const c = document.createElement('canvas');
@@ -51,10 +51,13 @@ function request(command) {
 }
 studio.request = request;
 
+// A tab in the background asks for no frames.
+document.addEventListener('visibilitychange', () => send({ cmd: 'rate', fps: document.hidden ? 0 : rate }));
+
 function connect() {
   ws = new WebSocket(`ws://${location.host}/ws${token ? '?token=' + encodeURIComponent(token) : ''}`);
   ws.binaryType = 'arraybuffer';
-  ws.onopen = () => { studio.connected = true; send({ cmd: 'rate', fps: rate }); send({ cmd: 'hello' }); };
+  ws.onopen = () => { studio.connected = true; send({ cmd: 'rate', fps: document.hidden ? 0 : rate }); send({ cmd: 'hello' }); };
   ws.onclose = () => { studio.connected = false; $('stats').textContent = 'disconnected: retrying…'; setTimeout(connect, 1000); };
   ws.onmessage = (e) => (typeof e.data === 'string' ? onText(JSON.parse(e.data)) : onBinary(e.data));
 }
@@ -62,6 +65,10 @@ function connect() {
 // --- messages from the server ------------------------------------------------------
 
 let dragSent = null;  // {at, step} of the drag waiting for its frame
+// The server sends the next frame once the page has taken this one
+// ("ready"), so frames never pile up in the socket; the draw loop draws the
+// latest at each animation frame and skips the ones that came in between.
+let undrawn = null;
 function onBinary(buffer) {
   const k = P.kind(buffer);
   if (k === P.TOPOLOGY) {
@@ -75,9 +82,12 @@ function onBinary(buffer) {
     studio.frames++;
     if (dragSent && dragSent.step !== null && f.step > dragSent.step) {
       studio.dragLatency.push(performance.now() - dragSent.at);
+      f.dragAt = dragSent.at;
       dragSent = null;
     }
-    if (!studio.preview) view.setFrame(f);
+    send({ cmd: 'ready' });
+    if (undrawn && f.dragAt === undefined) f.dragAt = undrawn.dragAt;  // a newer frame shows the drag too
+    if (!studio.preview && drawing) undrawn = f;
     plotResidual(f);
   } else if (k === P.PREVIEW_TOPOLOGY) {
     studio.preview = { topology: P.readTopology(buffer) };
@@ -129,9 +139,12 @@ function plotResidual(f) {
   plot.setData(plotData);
 }
 
-let frameCount = 0, lastCount = performance.now();
+let frameCount = 0, lastCount = performance.now(), lastStats = 0;
+// A few times a second: rewriting the text re-lays out and repaints the page.
 function updateStats() {
   const now = performance.now();
+  if (now - lastStats < 250) return;
+  lastStats = now;
   if (now - lastCount >= 1000) {
     studio.fps = (studio.frames - frameCount) * 1000 / (now - lastCount);
     frameCount = studio.frames;
@@ -154,6 +167,7 @@ function updateStats() {
 // --- controls: solver, parameters, view --------------------------------------------------
 
 let gui = null;
+const list = (x) => (Array.isArray(x) ? x : []);  // an empty Lua table comes as {}
 const INTEGRATORS = ['leapfrog', 'symplectic_euler', 'velocity_verlet', 'midpoint', 'rk4', 'vie', 'projective', 'mixed'];
 function onHello(h) {
   studio.hello = h;
@@ -171,7 +185,7 @@ function onHello(h) {
   solver.add(st, 'speed', 0, 20000, 100).name('steps/s (0: no limit)').onFinishChange(set('speed'));
   const params = gui.addFolder('scene parameters (re-run the scene)');
   const values = {};
-  for (const p of h.params || []) {
+  for (const p of list(h.params)) {
     values[p.name] = p.value;
     const c = typeof p.value === 'number'
       ? params.add(values, p.name, Math.min(0, 2 * p.value), Math.max(2 * p.value, 1e-9 + 2 * Math.abs(p.default || 1)))
@@ -179,15 +193,15 @@ function onHello(h) {
     c.onFinishChange((v) => send({ cmd: 'param', name: p.name, value: v }));
   }
   const look = gui.addFolder('view');
-  const viewState = { colour: h.field || 'none', points: view.pointSize, fit: () => view.fit() };
+  const viewState = { colour: h.field || 'none', points: view.points ? view.points.material.size : 6, fit: () => view.fit() };
   look.add(viewState, 'colour', ['none', ...h.fields.map((f) => f.name)]).onChange((v) => {
     const f = h.fields.find((x) => x.name === v) || null;
     view.setField(f);
     send({ cmd: 'field', name: f ? f.name : '' });
   });
-  look.add(viewState, 'points', 1, 20, 1).onChange((v) => { view.pointSize = v; if (view.points) view.points.material.size = v; });
+  look.add(viewState, 'points', 1, 20, 1).onChange((v) => view.setPointSize(v));
   look.add(viewState, 'fit');
-  renderPalette(h.palette || []);
+  renderPalette(list(h.palette));
 }
 
 // --- selection and the rule palette ---------------------------------------------------------
@@ -398,9 +412,16 @@ function loop() {
     dragTarget = null;
   }
   view.controls.update();
+  let dragAt = null;
+  if (undrawn) {
+    if (view.setFrame(undrawn)) studio.drawnFrames = (studio.drawnFrames || 0) + 1;
+    dragAt = undrawn.dragAt ?? null;
+    undrawn = null;
+  }
   if (drawing && (dirty || view.changed)) {
     const t0 = performance.now();
     view.render();
+    if (dragAt !== null) studio.drawLatency.push(performance.now() - dragAt);
     studio.renderMs = 0.9 * studio.renderMs + 0.1 * (performance.now() - t0);
     dirty = view.changed = false;
   }
