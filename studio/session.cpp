@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <optional>
 #include <filesystem>
 #include <stdexcept>
@@ -35,6 +34,8 @@ std::string number_or(const json& c, const char* key, double fallback, double& o
 json ok(json value = nullptr) { return {{"ok", true}, {"value", std::move(value)}}; }
 json refused(std::string why) { return {{"ok", false}, {"message", std::move(why)}}; }
 json from(const CallResult& r) { return r.ok ? ok(r.value) : refused(r.message); }
+// A command whose reply is sent later, by someone else (a timeline preview).
+const json kAnsweredLater = {{"answered", "later"}};
 
 json particle_arg(const json& c) {
   if (!c.contains("particle")) throw std::runtime_error("'particle' is required (a particle id)");
@@ -73,7 +74,7 @@ bool Session::is_command(const std::string& name) {
   return false;
 }
 
-Session::Session(SessionOptions options, Outbox& out) : options_(std::move(options)), out_(out) {
+Session::Session(SessionOptions options, Outbox& out) : options_(std::move(options)), out_(out), previews_(out) {
   options_.run.preload.insert(options_.run.preload.begin(), {"studio/studio.lua", kStudioLua});
   options_.run.progress = false;
   options_.run.after_step = [this](lua_State* L) { return after_step(L); };
@@ -276,10 +277,12 @@ bool Session::apply_queued(lua_State* L) {
     } catch (const std::exception& e) {
       reply = refused(e.what());
     }
-    reply["type"] = "reply";
-    reply["cmd"] = name;
-    if (c.body.contains("id")) reply["id"] = c.body["id"];
-    out_.send(c.from, reply.dump(), false);
+    if (reply != kAnsweredLater) {
+      reply["type"] = "reply";
+      reply["cmd"] = name;
+      if (c.body.contains("id")) reply["id"] = c.body["id"];
+      out_.send(c.from, reply.dump(), false);
+    }
     if (spec && name != "field") broadcast_status();
   }
   if (changed) show_next_step_ = true;  // drag-to-frame latency: one step, then the frame
@@ -557,7 +560,7 @@ json Session::cmd_save(lua_State* L, const json&) {
 }
 
 // The model after production `index` (0: before the first), replayed on an
-// empty model and sent to the asking page as a preview.
+// empty model (Previews, off the solver thread) and sent to the asking page.
 json Session::cmd_timeline(lua_State* L, const json& c) {
   const lua::Scene& s = scene_of(L, model_ref_);
   const std::vector<std::size_t> prods = productions(s);
@@ -565,19 +568,12 @@ json Session::cmd_timeline(lua_State* L, const json& c) {
   if (std::string e = number_or(c, "index", 0, index); !e.empty()) return refused(e);
   if (index < 0 || index > double(prods.size()) || index != std::floor(index))
     return refused("'index' must be 0 to " + std::to_string(prods.size()));
-  std::vector<std::string> lines = s.trace.lines(s.solver);
-  lines.resize(index == 0 ? 0 : prods[std::size_t(index) - 1] + 1);
-  Model m;
-  Solver solver(m);
-  replay_lines(lines, m, solver);
-  Topology t = topology_of(m);
-  t.revision = 0;
-  std::string topo = encode(t), frame = encode_frame(m, solver, t, {});
-  std::memcpy(topo.data(), &kPreviewTopology, 4);
-  std::memcpy(frame.data(), &kPreviewFrame, 4);
-  out_.send(replying_to_, topo, true);
-  out_.send(replying_to_, frame, true);
-  return ok(json{{"index", index}, {"of", prods.size()}, {"steps", solver.steps()}, {"particles", m.particle_count()}});
+  const std::size_t k = std::size_t(index), n = k == 0 ? 0 : prods[k - 1] + 1;
+  std::vector<std::string> lines;
+  lines.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) lines.push_back(s.trace.line(i));
+  previews_.request(replying_to_, c.value("id", json()), k, prods.size(), std::move(lines));
+  return kAnsweredLater;
 }
 
 // Back to a snapshot (an equilibrium) or a production, and on from there.

@@ -19,6 +19,7 @@
 
 #include "frames.hpp"
 #include "lua_host.hpp"
+#include "previews.hpp"
 #include "timeline.hpp"
 
 struct lua_State;
@@ -114,6 +115,7 @@ class Session {
 
   SessionOptions options_;
   Outbox& out_;
+  Previews previews_;
   std::mutex mutex_;
   std::condition_variable wake_;
   std::deque<Command> queue_;

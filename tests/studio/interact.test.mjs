@@ -117,6 +117,19 @@ await run('interact', scene('scripts/examples/grow.lua'), ['--speed', '0'], asyn
   check(earlier.n > 0 && earlier.n < live, `the timeline shows an earlier model: ${earlier.label}, ${earlier.n} particles (live: ${live})`);
   await page.click('#live');
 
+  // A preview replays in a thread of its own: the live model goes on
+  // stepping, and frames keep coming, while the whole journal replays.
+  await page.evaluate(() => { studio.send({ cmd: 'settings', settings: { tolerance: 1e-12 } }); studio.send({ cmd: 'run' }); });
+  await until(page, () => studio.status && !studio.status.converged && !studio.status.paused);
+  const during = await page.evaluate(async () => {
+    const frames = studio.frames, step = studio.frame.step, t0 = performance.now();
+    const m = await studio.request({ cmd: 'timeline', index: studio.status.productions });
+    return { ok: m.ok, ms: performance.now() - t0, frames: studio.frames - frames, steps: studio.frame.step - step, replayed: m.value && m.value.steps };
+  });
+  check(during.ok && during.frames >= 5 && during.steps > 0,
+        `while the whole journal replayed (${during.replayed} steps, ${during.ms.toFixed(0)} ms) the page got ${during.frames} live frames (>= 5), ${during.steps} steps on`);
+  await page.evaluate(() => studio.send({ cmd: 'settings', settings: { tolerance: 1e-3 } }));
+
   // --- the session's journal replays to the same model ----------------------------------------
   await page.click('#pause');
   await until(page, () => studio.status && studio.status.paused);

@@ -90,9 +90,11 @@ function onBinary(buffer) {
     if (!studio.preview && drawing) undrawn = f;
     plotResidual(f);
   } else if (k === P.PREVIEW_TOPOLOGY) {
+    if (!scrubbing) return;  // back to live before the replay came: too late
     studio.preview = { topology: P.readTopology(buffer) };
     view.setTopology(studio.preview.topology);
   } else if (k === P.PREVIEW_FRAME) {
+    if (!studio.preview) return;
     studio.preview.frame = P.readFrame(buffer);
     view.setFrame(studio.preview.frame);
   }
