@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 #include "lua_model.hpp"
@@ -57,6 +58,15 @@ int run_scene(const std::string& path, const SceneOptions& options, std::string*
   for (const auto& [name, source] : options.preload)
     if (luaL_loadbuffer(L, source.data(), source.size(), ("=" + name).c_str()) != LUA_OK || lua_pcall(L, 0, 0, 0) != LUA_OK)
       return fail(lua_tostring(L, -1));
+
+  // The scene's own modules: require("lib.name") finds lib/name.lua beside it.
+  const std::string dir = std::filesystem::path(path).parent_path().string();
+  lua_getglobal(L, "package");
+  lua_pushstring(L, ((dir.empty() ? std::string(".") : dir) + "/?.lua;").c_str());
+  lua_getfield(L, -2, "path");
+  lua_concat(L, 2);
+  lua_setfield(L, -2, "path");
+  lua_pop(L, 1);
 
   lua_pushcfunction(L, traceback);
   if (luaL_loadfile(L, path.c_str()) != LUA_OK) return fail(lua_tostring(L, -1));

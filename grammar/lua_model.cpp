@@ -286,17 +286,78 @@ int l_cable(lua_State* L) {
   return 1;
 }
 
+// The list of {x, y, z} under 'points' of the options at idx.
+std::vector<Vec3> field_points(lua_State* L, int idx, const char* fn) {
+  lua_getfield(L, idx, "points");
+  const int t = lua_gettop(L);
+  if (!lua_istable(L, t)) {
+    lua_pop(L, 1);
+    key_error(fn, "points", "must be a list of {x, y, z}");
+  }
+  std::vector<Vec3> pts;
+  for (lua_Integer k = 1; k <= lua_Integer(lua_rawlen(L, t)); ++k) {
+    lua_rawgeti(L, t, k);
+    try {
+      pts.push_back(check_vec3(L, lua_gettop(L), fn));
+    } catch (...) {
+      lua_pop(L, 2);
+      throw LuaArgError("beam: points[" + std::to_string(k) + "] must be {x, y, z}");
+    }
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  return pts;
+}
+
+// A ring (thesis 6.3.2: "a center point, a plane, a radius and a particle
+// resolution"): 'segments' points on the circle of 'radius' about 'centre'
+// in the plane normal to 'normal', counter-clockwise seen from the normal's
+// tip, the first towards 'start' (default: global x projected on the plane,
+// or global y when the normal is along x).
+std::vector<Vec3> ring_points(lua_State* L, int idx, const char* fn) {
+  const Vec3 centre = field_vec3(L, idx, "centre", fn);
+  if (!has_field(L, idx, "normal")) key_error(fn, "normal", "is required with 'centre' (the ring's plane)");
+  const Vec3 normal = field_vec3(L, idx, "normal", fn);
+  if (!(normal.norm() > 0)) key_error(fn, "normal", "must be a non-zero vector");
+  const Vec3 n = normal.normalized();
+  const double radius = field_number(L, idx, "radius", fn, 0);
+  if (!(radius > 0) || !std::isfinite(radius)) key_error(fn, "radius", "must be a finite number > 0 [m]");
+  const double segments = field_number(L, idx, "segments", fn, 0);
+  if (segments != std::floor(segments) || segments < 3 || segments > 1e6)
+    key_error(fn, "segments", "must be a whole number >= 3 for a ring");
+  Vec3 start = has_field(L, idx, "start") ? field_vec3(L, idx, "start", fn)
+                                          : (std::abs(n.x()) > 0.9 ? Vec3::UnitY() : Vec3::UnitX());
+  start -= start.dot(n) * n;
+  if (!(start.norm() > 1e-9 * (1 + start.norm()))) key_error(fn, "start", "must not be along the normal");
+  const Vec3 u = start.normalized(), v = n.cross(u);
+  std::vector<Vec3> pts;
+  for (int k = 0; k < int(segments); ++k) {
+    const double t = 2 * M_PI * k / segments;
+    pts.push_back(centre + radius * (std::cos(t) * u + std::sin(t) * v));
+  }
+  return pts;
+}
+
 int l_beam(lua_State* L) {
   const char* fn = "beam";
   Scene& s = check_scene(L, fn);
   JournalScope record(s, "beam", describe_args(L, 2, lua_gettop(L)));
   check_table(L, 2, fn);
-  check_keys(L, 2, fn, {"points", "particles", "from", "direction", "segments", "closed", "EA", "EI", "E", "A", "I", "prestress", "line_mass", "dofs", "GJ", "EIy", "EIz"});
+  check_keys(L, 2, fn, {"points", "particles", "from", "direction", "segments", "closed", "centre", "normal", "radius", "start",
+                        "EA", "EI", "E", "A", "I", "prestress", "line_mass", "dofs", "GJ", "EIy", "EIz"});
   Section sec = read_section(L, 2, fn, true);
   const int dofs = read_beam6_section(L, 2, fn, sec);
-  const bool closed = field_bool(L, 2, "closed", fn, false);
-  const int ways = has_field(L, 2, "points") + has_field(L, 2, "particles") + has_field(L, 2, "from");
-  if (ways != 1) throw LuaArgError("beam: give exactly one of 'points', 'particles' or 'from' (with 'direction' and 'segments')");
+  const bool ring = has_field(L, 2, "centre");
+  if (ring && has_field(L, 2, "closed") && !field_bool(L, 2, "closed", fn, true))
+    key_error(fn, "closed", "cannot be false with 'centre': a ring is closed");
+  if (!ring)
+    for (const char* key : {"normal", "radius", "start"})
+      if (has_field(L, 2, key)) key_error(fn, key, "belongs to a ring: give 'centre' too");
+  const bool closed = ring || field_bool(L, 2, "closed", fn, false);
+  const int ways = has_field(L, 2, "points") + has_field(L, 2, "particles") + has_field(L, 2, "from") + ring;
+  if (ways != 1)
+    throw LuaArgError("beam: give exactly one of 'points', 'particles', 'from' (with 'direction' and 'segments') or "
+                      "'centre' (a ring, with 'normal', 'radius' and 'segments')");
   BlockId b;
   if (has_field(L, 2, "from")) {
     if (closed) key_error(fn, "closed", "is not available with 'from'");
@@ -313,24 +374,7 @@ int l_beam(lua_State* L) {
     b = s.model.add_beam(ps, sec, closed);
     s.record(beam_line(ps, sec, closed));
   } else {
-    lua_getfield(L, 2, "points");
-    const int t = lua_gettop(L);
-    if (!lua_istable(L, t)) {
-      lua_pop(L, 1);
-      key_error(fn, "points", "must be a list of {x, y, z}");
-    }
-    std::vector<Vec3> pts;
-    for (lua_Integer k = 1; k <= lua_Integer(lua_rawlen(L, t)); ++k) {
-      lua_rawgeti(L, t, k);
-      try {
-        pts.push_back(check_vec3(L, lua_gettop(L), fn));
-      } catch (...) {
-        lua_pop(L, 2);
-        throw LuaArgError("beam: points[" + std::to_string(k) + "] must be {x, y, z}");
-      }
-      lua_pop(L, 1);
-    }
-    lua_pop(L, 1);
+    std::vector<Vec3> pts = ring ? ring_points(L, 2, fn) : field_points(L, 2, fn);
     if (pts.size() < (closed ? 3u : 2u)) key_error(fn, "points", closed ? "needs at least 3 points for a ring" : "needs at least 2 points");
     // Validate before creating particles so a refused beam leaves nothing behind.
     if (sec.EA <= 0 || sec.EI <= 0) throw LuaArgError("beam: EA and EI must be > 0");
@@ -670,6 +714,7 @@ int l_run(lua_State* L) {
   // With triggers, rules run between steps; a rule that changes the model at
   // equilibrium keeps the run going.
   RunResult r;
+  std::uint64_t at_rest_since = 0;  // the step the model came to rest at (0: moving)
   while (r.steps < cap) {
     s.solver.step();
     ++r.steps;
@@ -677,7 +722,9 @@ int l_run(lua_State* L) {
     const bool converged = r.residual < tolerance && s.solver.motion() < tolerance;
     bool changed = !s.triggers.empty() && fire_triggers(L, s, converged);
     if (after_step) changed |= after_step(L);
-    if (converged && !changed) {
+    if (!converged || changed) at_rest_since = 0;
+    else if (at_rest_since == 0) at_rest_since = s.solver.steps();
+    if (converged && !changed && every_triggers_had_their_turn(s, at_rest_since)) {
       r.converged = true;
       break;
     }

@@ -57,6 +57,19 @@ int l_extend(lua_State* L) {
   return 0;
 }
 
+// m:references(p): one block per reference of p, a block twice where a
+// loop joins it to itself at p (Model::references_of).
+int l_references(lua_State* L) {
+  Scene& s = check_scene(L, "references");
+  const std::vector<BlockId> bs = s.model.references_of(check_particle(L, 2, s, "references"));
+  lua_createtable(L, int(bs.size()), 0);
+  for (std::size_t k = 0; k < bs.size(); ++k) {
+    push_block(L, s, bs[k]);
+    lua_rawseti(L, -2, lua_Integer(k + 1));
+  }
+  return 1;
+}
+
 // m:summary(): figures of a grown structure for reports and sweeps.
 int l_summary(lua_State* L) {
   Scene& s = check_scene(L, "summary");
@@ -141,6 +154,7 @@ int l_joint_angle(lua_State* L) {
 void add_query_methods(lua_State* L) {
   set_fn<l_neighbours>(L, "neighbours");
   set_fn<l_extend>(L, "extend");
+  set_fn<l_references>(L, "references");
   set_fn<l_summary>(L, "summary");
   set_fn<l_joint>(L, "joint");
   set_fn<l_joint_angle>(L, "joint_angle");

@@ -20,6 +20,7 @@ struct Trigger {
   std::int64_t max = -1;       // applications, -1: unlimited
   std::int64_t applied = 0;
   int failures = 0;  // in a row
+  std::uint64_t last_due = 0;  // the step an `every` trigger was last due at
 };
 
 namespace {
@@ -256,6 +257,8 @@ int l_journal(lua_State* L) {
     lua_setfield(L, -2, "created_blocks");
     push_ids(L, e.changes.deleted_blocks);
     lua_setfield(L, -2, "deleted_blocks");
+    push_ids(L, e.changes.changed_blocks);
+    lua_setfield(L, -2, "changed_blocks");
     lua_rawseti(L, -2, ++n);
   }
   return 1;
@@ -346,7 +349,10 @@ bool fire_triggers(lua_State* L, Scene& s, bool converged) {
   for (Trigger* t : s.triggers) {
     if (t->max >= 0 && t->applied >= t->max) continue;
     bool due = false;
-    if (t->every > 0) due = s.solver.steps() % std::uint64_t(t->every) == 0;
+    if (t->every > 0) {
+      due = s.solver.steps() % std::uint64_t(t->every) == 0;
+      if (due) t->last_due = s.solver.steps();
+    }
     else if (t->on_equilibrium) due = converged;
     else {
       lua_rawgeti(L, LUA_REGISTRYINDEX, t->when_ref);
@@ -410,6 +416,12 @@ bool fire_triggers(lua_State* L, Scene& s, bool converged) {
     lua_settop(L, rule - 1);
   }
   return changed;
+}
+
+bool every_triggers_had_their_turn(const Scene& s, std::uint64_t since) {
+  for (const Trigger* t : s.triggers)
+    if (t->every > 0 && !(t->max >= 0 && t->applied >= t->max) && t->last_due < since) return false;
+  return true;
 }
 
 void add_rule_constructor(lua_State* L) {

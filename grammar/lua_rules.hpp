@@ -40,4 +40,10 @@ class JournalScope {
 // changed the model. The model userdata must be at stack index 1.
 bool fire_triggers(lua_State* L, Scene& s, bool converged);
 
+// Whether every `every = N` trigger that may still apply was due at a step
+// >= `since` (the step the model came to rest): a run ends at equilibrium
+// only once each has had its turn there, so a rule every N steps also fires
+// on a model that starts at rest.
+bool every_triggers_had_their_turn(const Scene& s, std::uint64_t since);
+
 }  // namespace tendril::lua

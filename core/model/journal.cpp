@@ -1,5 +1,6 @@
 #include "model/journal.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace tendril {
@@ -19,16 +20,23 @@ std::string join(const std::string& a, const std::string& b) {
 }  // namespace
 
 std::string Journal::assembly_sequence() const {
-  std::string out = "#  step  time  rule  arguments  created  deleted\n";
+  std::string out = "#  step  time  rule  arguments  created  deleted  changed\n";
   std::size_t n = 0;
   for (const JournalEntry& e : entries) {
-    if (e.changes.empty()) continue;  // moves and settings are in the trace, not the assembly
     char head[96];
     std::snprintf(head, sizeof head, "%zu\t%llu\t%.6g\t", ++n, static_cast<unsigned long long>(e.step), e.time);
-    const std::string created = join(ids("p", e.changes.created_particles), ids("b", e.changes.created_blocks));
-    const std::string deleted = join(ids("p", e.changes.deleted_particles), ids("b", e.changes.deleted_blocks));
+    const ChangeSet& c = e.changes;
+    const std::string created = join(ids("p", c.created_particles), ids("b", c.created_blocks));
+    const std::string deleted = join(ids("p", c.deleted_particles), ids("b", c.deleted_blocks));
+    // Blocks that were there before and after: grown, connected, disconnected.
+    std::vector<std::uint32_t> kept;
+    for (std::uint32_t b : c.changed_blocks)
+      if (std::find(c.created_blocks.begin(), c.created_blocks.end(), b) == c.created_blocks.end() &&
+          std::find(c.deleted_blocks.begin(), c.deleted_blocks.end(), b) == c.deleted_blocks.end())
+        kept.push_back(b);
+    const std::string changed = ids("b", kept);
     out += head + e.rule + "\t" + (e.args.empty() ? "-" : e.args) + "\t" + (created.empty() ? "-" : created) + "\t" +
-           (deleted.empty() ? "-" : deleted) + "\n";
+           (deleted.empty() ? "-" : deleted) + "\t" + (changed.empty() ? "-" : changed) + "\n";
   }
   return out;
 }

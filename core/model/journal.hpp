@@ -20,8 +20,10 @@ struct JournalEntry {
 
 struct Journal {
   std::vector<JournalEntry> entries;
-  // One line per production that created or deleted something: step, time,
-  // rule, arguments, created, deleted.
+  // One line per production (every rule applied and every topological
+  // operation, whether it created something or not): step, time, rule,
+  // arguments, created, deleted, and the blocks it changed that were there
+  // before and after (a beam grown, blocks connected or disconnected).
   std::string assembly_sequence() const;
 };
 

@@ -21,7 +21,8 @@ Model::Model()
       beam_end(map.add_column<Quat>(Quat::Identity())),
       cst_first(map.add_column<std::uint8_t>(0)),
       cst_reference(map.add_column<CstReference>(CstReference{})),
-      dart_cst(map.add_column<ElementIndex>(kNone)) {
+      dart_cst(map.add_column<ElementIndex>(kNone)),
+      merge_origin(map.add_column<MergeOrigin>(MergeOrigin{})) {
   UndoLog* log = &map.undo_log();
   particles.attach(log);
   blocks.attach(log);
@@ -116,8 +117,17 @@ void Model::free_dart(Dart d) {
   map.delete_dart(d);
 }
 
+namespace {
+void note_changed(ChangeSet* changes, BlockId b) {
+  if (!changes) return;
+  auto& v = changes->changed_blocks;
+  if (std::find(v.begin(), v.end(), b) == v.end()) v.push_back(b);
+}
+}  // namespace
+
 void Model::embed(Dart d, ParticleId p) {
   ++revision;
+  note_changed(changes, dart_block[d]);
   dart_particle[d] = p;
   Dart head = particles.first_dart[p];
   if (head == kNone) {
@@ -136,6 +146,7 @@ void Model::embed(Dart d, ParticleId p) {
 
 void Model::unembed(Dart d) {
   ++revision;
+  note_changed(changes, dart_block[d]);
   ParticleId p = dart_particle[d];
   Dart n = ring_next[d], pr = ring_prev[d];
   if (n == d) {
@@ -539,7 +550,30 @@ State Model::state(ParticleId p) const {
   if (particles.passive[p]) return State::Passive;
   if (particles.lock[p] & kLockRotation) return State::FullLock;
   if (particles.lock[p] & kLockTranslation) return State::Lock;
-  return blocks_of(p).size() > 1 ? State::Shared : State::Simple;
+  return reference_groups(p).size() > 1 ? State::Shared : State::Simple;
+}
+
+std::vector<std::vector<Dart>> Model::reference_groups(ParticleId p) const {
+  std::vector<std::vector<Dart>> groups;
+  std::vector<Dart> seen;
+  for (Dart d : darts_of(p)) {
+    if (std::find(seen.begin(), seen.end(), d) != seen.end()) continue;
+    std::vector<Dart> group = map.orbit(kVertexOrbit, d);
+    std::sort(group.begin(), group.end());
+    seen.insert(seen.end(), group.begin(), group.end());
+    groups.push_back(std::move(group));
+  }
+  std::sort(groups.begin(), groups.end(), [&](const std::vector<Dart>& a, const std::vector<Dart>& b) {
+    return std::pair{dart_block[a[0]], a[0]} < std::pair{dart_block[b[0]], b[0]};
+  });
+  return groups;
+}
+
+std::vector<BlockId> Model::references_of(ParticleId p) const {
+  require_particle(p, "references");
+  std::vector<BlockId> out;
+  for (const auto& g : reference_groups(p)) out.push_back(dart_block[g[0]]);
+  return out;
 }
 
 std::vector<ParticleId> Model::particles_of(BlockId b) const {

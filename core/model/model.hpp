@@ -31,13 +31,26 @@ struct Block {
 };
 
 // What a production created and deleted, collected while a change record is
-// open (the journal's "created and deleted ids").
+// open (the journal's "created and deleted ids"), and the blocks whose darts
+// it added, removed or moved to another particle (a beam grown by rule 9,
+// the blocks rule 3 connects or rule 4 disconnects), in order of first touch.
 struct ChangeSet {
   std::vector<ParticleId> created_particles, deleted_particles;
-  std::vector<BlockId> created_blocks, deleted_blocks;
+  std::vector<BlockId> created_blocks, deleted_blocks, changed_blocks;
   bool empty() const {
-    return created_particles.empty() && deleted_particles.empty() && created_blocks.empty() && deleted_blocks.empty();
+    return created_particles.empty() && deleted_particles.empty() && created_blocks.empty() &&
+           deleted_blocks.empty() && changed_blocks.empty();
   }
+};
+
+// What a dart remembers of the particle it had before rule 3 merged it into
+// another (thesis 6.2: "reverting the connection"): that particle's position
+// relative to the merged one, its locks and the merged particle's locks at
+// the merge. Rules 4 and 5 put the particle they make for the dart there.
+struct MergeOrigin {
+  Vec3 offset = Vec3::Zero();
+  std::uint8_t lock = 0, merged_lock = 0;
+  bool set = false;
 };
 
 class Model {
@@ -49,9 +62,17 @@ class Model {
   // --- particles (rules 1-5) -------------------------------------------
   ParticleId add_particle(const Vec3& x);                    // rule 1
   void delete_particle(ParticleId p);                        // rule 2
-  ParticleId merge(const std::vector<ParticleId>& ps);       // rule 3
-  std::vector<ParticleId> explode(ParticleId p);             // rule 4
-  ParticleId explode_from(ParticleId p, BlockId b);          // rule 5
+  // Rule 3. Each dart remembers the particle it came from (MergeOrigin).
+  ParticleId merge(const std::vector<ParticleId>& ps);
+  // Rule 4: one particle per reference of p (references_of), in that order.
+  // A reference that rule 3 brought to p returns to where its particle was
+  // relative to p, with that particle's locks (locks set or cleared on p
+  // since the merge apply to all): exploding a merge reverts it.
+  std::vector<ParticleId> explode(ParticleId p);
+  // Rule 5: detaches block b from p, on a particle of its own placed as rule
+  // 4 places it. When b is all p holds (a beam joined to itself), detaches
+  // b's last reference only: the loop opens at p.
+  ParticleId explode_from(ParticleId p, BlockId b);
 
   // --- cables (rules 6-7) ----------------------------------------------
   // Rule 6. A rest length <= 0 takes the current distance.
@@ -169,6 +190,11 @@ class Model {
   // --- queries -----------------------------------------------------------
   State state(ParticleId p) const;
   std::vector<BlockId> blocks_of(ParticleId p) const;  // distinct, ascending
+  // One block per reference of p (thesis 6.3.1: "cross-references to
+  // multiple elements, and/or multiple references to the same element"): a
+  // reference is a vertex orbit of the map, so a beam whose ends a loop
+  // joins at p is there twice. Ascending. Two or more make p shared.
+  std::vector<BlockId> references_of(ParticleId p) const;
   std::vector<ParticleId> particles_of(BlockId b) const;  // path order for beams/cables
   bool particle_valid(ParticleId p) const { return particles.valid(p); }
   bool block_valid(BlockId b) const { return b < blocks.size() && blocks[b].alive; }
@@ -239,6 +265,7 @@ class Model {
   DartColumn<std::uint8_t>& cst_first;
   DartColumn<CstReference>& cst_reference;
   DartColumn<ElementIndex>& dart_cst;
+  DartColumn<MergeOrigin>& merge_origin;  // rules 3-5 (operations.cpp)
 
   void require_particle(ParticleId p, const char* what) const;
   void require_block(BlockId b, const char* what) const;
@@ -302,6 +329,12 @@ class Model {
   std::string check_integrated(ParticleId p) const;
   Dart find_edge(ParticleId a, ParticleId b, BlockKind k) const;
   std::vector<Dart> darts_of(ParticleId p) const;
+  // p's darts grouped by reference (vertex orbit), ordered by block, then by
+  // the smallest dart of the group.
+  std::vector<std::vector<Dart>> reference_groups(ParticleId p) const;
+  // A particle at p for the darts `group` leave it by (rules 4, 5): placed
+  // and locked as MergeOrigin says; the darts move to it and forget.
+  ParticleId detach(ParticleId p, const std::vector<Dart>& group, bool first);
   void delete_component(BlockId b);
   Vec3 pos(Dart d) const { return particles.position[dart_particle[d]]; }
   std::size_t live_blocks_ = 0;

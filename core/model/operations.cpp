@@ -87,8 +87,44 @@ ParticleId Model::merge(const std::vector<ParticleId>& ps) {
   particles.orientation[q] = frame;
   if (spinning) particles.angular_velocity[q] = w / spinning;
   for (ParticleId p : set) {
-    for (Dart d : darts_of(p)) rehome_dart(d, q);
+    for (Dart d : darts_of(p)) {
+      // Where the dart's own particle was, and its locks, relative to q:
+      // through earlier merges back to the particle it was built on.
+      MergeOrigin o = merge_origin[d];
+      const Vec3 own = particles.position[p] + o.offset;
+      o.lock = o.set ? std::uint8_t(particles.lock[p] & (o.lock | ~o.merged_lock)) : particles.lock[p];
+      o.offset = own - particles.position[q];
+      o.merged_lock = lock;
+      o.set = true;
+      merge_origin[d] = o;
+      rehome_dart(d, q);
+    }
     free_particle(p);
+  }
+  return q;
+}
+
+ParticleId Model::detach(ParticleId p, const std::vector<Dart>& group, bool first) {
+  Vec3 offset = Vec3::Zero();
+  std::uint8_t lock = particles.lock[p];
+  for (Dart d : group) {
+    const MergeOrigin& o = merge_origin[d];
+    offset += o.offset;
+    if (o.set) lock = particles.lock[p] & (o.lock | ~o.merged_lock);
+  }
+  ParticleId q = new_particle(particles.position[p] + offset / double(group.size()));
+  particles.velocity[q] = particles.velocity[p];
+  particles.lock[q] = lock;
+  particles.orientation[q] = particles.orientation[p];
+  particles.angular_velocity[q] = particles.angular_velocity[p];
+  if (first) {  // the particle's own load, moment and mass go with the first reference
+    particles.load[q] = particles.load[p];
+    particles.moment[q] = particles.moment[p];
+    particles.point_mass[q] = particles.point_mass[p];
+  }
+  for (Dart d : group) {
+    merge_origin[d] = MergeOrigin{};
+    rehome_dart(d, q);
   }
   return q;
 }
@@ -96,26 +132,12 @@ ParticleId Model::merge(const std::vector<ParticleId>& ps) {
 std::vector<ParticleId> Model::explode(ParticleId p) {
   require_particle(p, "explode");
   if (particles.passive[p]) throw ModelError("explode: particle " + pid(p) + " is passive");
-  std::vector<BlockId> bs = blocks_of(p);
-  if (bs.size() < 2)
-    throw ModelError("explode: particle " + pid(p) + " belongs to " + std::to_string(bs.size()) +
-                     " block(s); only shared particles explode");
+  const std::vector<std::vector<Dart>> groups = reference_groups(p);
+  if (groups.size() < 2)
+    throw ModelError("explode: particle " + pid(p) + " has " + std::to_string(groups.size()) +
+                     " reference(s) to blocks; only shared particles explode");
   std::vector<ParticleId> out;
-  for (BlockId b : bs) {
-    ParticleId q = new_particle(particles.position[p]);
-    particles.velocity[q] = particles.velocity[p];
-    particles.lock[q] = particles.lock[p];
-    particles.orientation[q] = particles.orientation[p];
-    particles.angular_velocity[q] = particles.angular_velocity[p];
-    if (out.empty()) {  // the particle's own load, moment and mass go to the first block
-      particles.load[q] = particles.load[p];
-      particles.moment[q] = particles.moment[p];
-      particles.point_mass[q] = particles.point_mass[p];
-    }
-    for (Dart d : darts_of(p))
-      if (dart_block[d] == b) rehome_dart(d, q);
-    out.push_back(q);
-  }
+  for (const auto& group : groups) out.push_back(detach(p, group, out.empty()));
   free_particle(p);
   return out;
 }
@@ -124,19 +146,18 @@ ParticleId Model::explode_from(ParticleId p, BlockId b) {
   require_particle(p, "explode_from");
   require_block(b, "explode_from");
   if (particles.passive[p]) throw ModelError("explode_from: particle " + pid(p) + " is passive");
-  std::vector<BlockId> bs = blocks_of(p);
-  if (bs.size() < 2)
+  const std::vector<std::vector<Dart>> groups = reference_groups(p);
+  if (groups.size() < 2)
     throw ModelError("explode_from: particle " + pid(p) + " is not shared");
-  if (!std::binary_search(bs.begin(), bs.end(), b))
-    throw ModelError("explode_from: particle " + pid(p) + " is not on block " + std::to_string(b));
-  ParticleId q = new_particle(particles.position[p]);
-  particles.velocity[q] = particles.velocity[p];
-  particles.lock[q] = particles.lock[p];
-  particles.orientation[q] = particles.orientation[p];
-  particles.angular_velocity[q] = particles.angular_velocity[p];
-  for (Dart d : darts_of(p))
-    if (dart_block[d] == b) rehome_dart(d, q);
-  return q;
+  bool only_b = true;
+  std::vector<Dart> mine;
+  for (const auto& group : groups) {
+    if (dart_block[group[0]] != b) only_b = false;
+    else mine.insert(mine.end(), group.begin(), group.end());
+  }
+  if (only_b) mine = groups.back();  // a loop: its last reference goes, the loop opens
+  if (mine.empty()) throw ModelError("explode_from: particle " + pid(p) + " is not on block " + std::to_string(b));
+  return detach(p, mine, false);
 }
 
 // --- cables ------------------------------------------------------------------

@@ -52,17 +52,19 @@ define("merge", "rule 3: merge particles",
   end,
   function(m, ps) return m:merge(ps) end)
 
+-- A particle is shared when it holds two or more references: blocks, or one
+-- block twice where a loop joins a beam to itself (m:references).
 define("explode", "rule 4: explode a shared particle",
   function(m, p)
-    local n = #m:blocks(p)
+    local n = #m:references(p)
     if m:state(p) == "passive" then return false, "particle is passive" end
-    return n >= 2, string.format("particle %d is on %d block(s)", p.id, n)
+    return n >= 2, string.format("particle %d holds %d reference(s) to blocks", p.id, n)
   end,
   function(m, p) return m:explode(p) end)
 
 define("explode_from", "rule 5: explode a particle from one block",
   function(m, p, b)
-    local bs = m:blocks(p)
+    local bs = m:references(p)
     if #bs < 2 or m:state(p) == "passive" then return false, string.format("particle %d is not shared", p.id) end
     for _, x in ipairs(bs) do
       if x == b then return true end
@@ -187,6 +189,13 @@ define("break_shared", "rule 17: break a spline beam on a shared particle",
 define("delete_beam", "rule 18: delete a spline beam",
   function(m, beam) return kind_is(m, beam, "beam") end,
   function(m, beam) m:delete(beam) end)
+
+define("ring", "ring: a closed spline beam from a centre, a plane normal, a radius and segments (thesis 6.3.2)",
+  function(m, options)
+    return type(options) == "table" and options.centre ~= nil,
+      "needs the options of m:beam with 'centre', 'normal', 'radius' and 'segments'"
+  end,
+  function(m, options) return m:beam(options) end)
 
 -- Looped typologies (thesis fig. 6.10): a beam connected to itself --------------
 

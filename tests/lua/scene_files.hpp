@@ -42,4 +42,9 @@ struct Replayed {
   std::string xml() const { return model_xml_string(model, solver.settings); }
 };
 
+// Whether dir/journal.txt replays to the model saved as dir/live.xml.
+inline bool replays_to_live(const std::filesystem::path& dir) {
+  return Replayed(dir / "journal.txt").xml() == slurp(dir / "live.xml");
+}
+
 }  // namespace tendril::test

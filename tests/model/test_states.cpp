@@ -1,6 +1,7 @@
 // Vertex states of thesis 4.2.6 as Model::state derives them: from the number
-// of blocks a particle belongs to, its passive flag and its lock bits, never
-// set by hand; and how they follow the primitive operations.
+// of references a particle holds (blocks; a loop's beam twice, test_loops.cpp),
+// its passive flag and its lock bits, never set by hand; and how they follow
+// the primitive operations.
 #include <doctest/doctest.h>
 
 #include <string>
