@@ -123,7 +123,7 @@ cantilever("C6", "B", 0.40, 2.0, 0.012, -1)
 -- longer than the gap it bridges (at least 1.5 m), unless its length is given.
 local function bridge(name, from, to, d, L, lift)
   local x, y = m:position(from), m:position(to)
-  local gap = assemble.distance(x, y)
+  local gap = case.distance(x, y)
   L = L or math.max(1.5, 1.2 * gap)
   assert(gap < L, string.format("%s: %.2f m apart, longer than the rod (%.2f m)", name, gap, L))
   local dir = { y[1] - x[1], y[2] - x[2], y[3] - x[3] + (lift or 0.3) }
@@ -150,7 +150,7 @@ seq:step("grid G4", { { g4_end[#g4_end], at("B", 0.5) } }, worst)
 -- floor, cut 15 % longer than the gap and bowing outwards.
 local function leg(name, x, y, to, d, outwards)
   local p = m:position(to)
-  local gap = assemble.distance(p, { x, y, 0 })
+  local gap = case.distance(p, { x, y, 0 })
   local dir = { p[1] - x + outwards * 0.3 * gap, p[2] - y, p[3] }
   rod(name, foot(x, y), dir, math.max(1.5, 1.15 * gap), d)
   local ps = m:particles(beam_of(name))

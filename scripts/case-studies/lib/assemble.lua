@@ -7,11 +7,6 @@ local assemble = {}
 
 local R = tendril.rules
 
-local function distance(x, y)
-  return math.sqrt((x[1] - y[1])^2 + (x[2] - y[2])^2 + (x[3] - y[3])^2)
-end
-assemble.distance = distance
-
 -- A new sequence on model m: settle options for every equilibrium, the
 -- goals' weight [N/m] while dragging.
 function assemble.new(m, options)

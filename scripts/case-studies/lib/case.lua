@@ -38,6 +38,11 @@ function case.beam_options(section, extra)
   return o
 end
 
+-- The distance between two points {x, y, z}.
+function case.distance(x, y)
+  return math.sqrt((x[1] - y[1])^2 + (x[2] - y[2])^2 + (x[3] - y[3])^2)
+end
+
 -- The bending radius at the middle of three consecutive positions (the
 -- circle through them; math.huge on a straight line).
 function case.radius(x, y, z)
@@ -55,18 +60,22 @@ end
 
 -- The smallest bending radius along a beam and the bending stress it
 -- causes at the section's extreme fibre, E c / R (axial stress is small in
--- a bending-active rod; it is left out and said so in the table).
-function case.bending(m, beam, section)
+-- a bending-active rod; it is left out and said so in the table), and the
+-- particle where it is. skip(p), if given, leaves particles out (supports).
+function case.bending(m, beam, section, skip)
   local ps = m:particles(beam)
   local n = #ps
   local closed = m:closed(beam)
-  local r_min = math.huge
+  local r_min, at = math.huge, nil
   local first, last = closed and 1 or 2, closed and n or n - 1
   for i = first, last do
     local a, b, c = ps[(i - 2) % n + 1], ps[i], ps[i % n + 1]
-    r_min = math.min(r_min, case.radius(m:position(a), m:position(b), m:position(c)))
+    if not (skip and skip(b)) then
+      local r = case.radius(m:position(a), m:position(b), m:position(c))
+      if r < r_min then r_min, at = r, b end
+    end
   end
-  return r_min, section.E * section.c / r_min
+  return r_min, section.E * section.c / r_min, at
 end
 
 -- The bounding box of some particles (all by default): its extent in x and
