@@ -16,6 +16,22 @@ namespace tendril::app {
 
 namespace {
 
+// A journal's comment as the terminal shows it: control characters (an
+// escape sequence, a carriage return that overwrites the line) written as
+// \xHH, so a journal cannot drive the terminal or forge what it shows.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (c >= 0x20 && c != 0x7f) out += char(c);
+    else {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      out += hex;
+    }
+  }
+  return out;
+}
+
 int replay(const std::string& journal, const std::string& out) {
   std::istringstream in(read_input_file(journal));
   Model model;
@@ -27,7 +43,7 @@ int replay(const std::string& journal, const std::string& out) {
   in.clear();
   in.seekg(0);
   for (std::string line; std::getline(in, line);)
-    if (line.rfind("# ", 0) == 0) std::printf("%s\n", line.c_str() + 2);
+    if (line.rfind("# ", 0) == 0) std::printf("%s\n", printable(line.substr(2)).c_str());
   std::printf("replayed %llu steps: %zu particles, %zu blocks -> %s/model.xml\n",
               static_cast<unsigned long long>(solver.steps()), model.particle_count(), model.block_count(),
               out.c_str());

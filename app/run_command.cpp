@@ -62,6 +62,21 @@ Command run_command() {
                 ->type_name("NAME=VALUE")
                 ->expected(1)
                 ->take_all();
+            auto* sandbox = cli.add_flag("--sandbox", a->options.sandbox,
+                         "runs a scene that is not your own with limits: no os/io beyond --out, no binary chunks, "
+                         "no package/require/debug, and the limits below (README, \"Safety\")");
+            add_integer(cli, "--memory-limit", a->options.limits.memory_mb, 1, 1 << 20,
+                        "--sandbox: the scene's Lua memory [MB]")
+                ->needs(sandbox)
+                ->capture_default_str();
+            add_integer(cli, "--production-limit", a->options.limits.production_instructions, 1000, kMax,
+                        "--sandbox: Lua instructions one rule application may take")
+                ->needs(sandbox)
+                ->capture_default_str();
+            cli.add_option("--time-limit", a->options.limits.seconds, "--sandbox: wall time of the whole scene [s]")
+                ->check(CLI::Range(0.001, 1e9))
+                ->needs(sandbox)
+                ->capture_default_str();
             cli.add_flag("--quiet", a->quiet, "no progress lines on stderr");
             cli.add_flag("--strict", a->strict, "exit status 3 when the last m:run{} did not converge");
             return [a] { return run(*a); };

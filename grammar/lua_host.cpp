@@ -6,9 +6,12 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
+#include "io/file_policy.hpp"
 #include "lua_model.hpp"
 #include "lua_params.hpp"
+#include "lua_sandbox.hpp"
 #include "lua_scene.hpp"
 
 namespace tendril {
@@ -26,7 +29,21 @@ int traceback(lua_State* L) {
 }
 }  // namespace
 
-int run_scene(const std::string& path, const SceneOptions& options, std::string* error, SceneReport* report) {
+int run_scene(const std::string& path, const SceneOptions& given, std::string* error, SceneReport* report) {
+  // --sandbox: the scene's own allocator, hook and libraries, its files in
+  // its folders, and its time checked after every solver step too.
+  std::optional<lua::Sandbox> sandbox;
+  std::optional<ScopedFilePolicy> files;
+  SceneOptions options = given;
+  if (options.sandbox) {
+    sandbox.emplace(options.limits);
+    const auto scene_folder = std::filesystem::absolute(path).parent_path();
+    files.emplace(FilePolicy{{options.out_dir}, {scene_folder}});
+    options.after_step = [&sandbox, inner = given.after_step](lua_State* L) {
+      sandbox->check_time();
+      return inner ? inner(L) : false;
+    };
+  }
   SceneReport own_report;
   if (!report) report = &own_report;
   *report = SceneReport{};
@@ -36,14 +53,18 @@ int run_scene(const std::string& path, const SceneOptions& options, std::string*
     // scene's: the message alone, without the scene's traceback.
     const bool usage = !report->usage_error.empty();
     if (usage) message = report->usage_error.c_str();
+    // Lua says "not enough memory" when the sandbox's allocator refused.
+    if (sandbox && !sandbox->stopped().empty() && std::strcmp(message ? message : "", "not enough memory") == 0)
+      message = sandbox->stopped().c_str();
     if (error) *error = message;
     else std::fprintf(stderr, "tendril: %s%s\n", usage ? "" : "error: ", message);
     return usage ? 2 : 1;
   };
-  std::unique_ptr<lua_State, decltype(&lua_close)> state(luaL_newstate(), &lua_close);
+  std::unique_ptr<lua_State, decltype(&lua_close)> state(sandbox ? sandbox->new_state() : luaL_newstate(), &lua_close);
   lua_State* L = state.get();
   if (!L) return fail("cannot create a Lua state");
   luaL_openlibs(L);
+  if (sandbox) lua::Sandbox::restrict_libraries(L);
   // Deterministic: the scene's random numbers depend on --seed only.
   lua_getglobal(L, "math");
   lua_getfield(L, -1, "randomseed");

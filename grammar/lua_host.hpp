@@ -10,6 +10,16 @@ struct lua_State;
 
 namespace tendril {
 
+// A scene is a program: it may do whatever its user may (README, "Safety").
+// --sandbox runs one that is not the user's own with these limits
+// (lua_sandbox.hpp): no os or io beyond its output folder (reads also beside
+// the scene), no binary chunks, no package, require or debug.
+struct SandboxLimits {
+  std::int64_t memory_mb = 1024;                        // Lua's heap
+  std::int64_t production_instructions = 100'000'000;   // Lua VM instructions per rule application
+  double seconds = 3600;                                // wall time of the whole scene
+};
+
 struct SceneOptions {
   std::string out_dir = "out";        // tendril.out(name) resolves here
   std::int64_t max_steps = -1;        // caps every run{}; -1: no cap
@@ -21,6 +31,8 @@ struct SceneOptions {
   std::vector<std::pair<std::string, std::string>> preload;
   // --param NAME=VALUE pairs, read by tendril.param(name, default).
   std::vector<std::pair<std::string, std::string>> params;
+  bool sandbox = false;  // --sandbox, with `limits`
+  SandboxLimits limits;
   // Runs the scene only up to its first m:run{} or m:step(), to read the
   // parameters it declares (`tendril params`, and sweep before it starts).
   bool declarations_only = false;

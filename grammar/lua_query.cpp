@@ -130,8 +130,9 @@ int l_joint(lua_State* L) {
 int l_joint_angle(lua_State* L) {
   const char* fn = "joint_angle";
   Scene& s = check_scene(L, fn);
-  const std::int64_t j = check_integer(L, 2, fn) - 1;
-  if (j < 0 || std::size_t(j) >= s.model.joints.size()) arg_error(fn, 2, "no such joint");
+  const std::int64_t number = check_integer(L, 2, fn);  // 1-based; math.mininteger - 1 would overflow
+  if (number < 1 || std::uint64_t(number) > s.model.joints.size()) arg_error(fn, 2, "no such joint");
+  const std::int64_t j = number - 1;
   if (lua_isnoneornil(L, 3)) {
     ParticleId n[4];
     if (!s.model.joint_neighbours(s.model.joints[std::size_t(j)].particle, n)) {

@@ -8,6 +8,7 @@
 
 #include "io/atomic_file.hpp"
 #include "lua_args.hpp"
+#include "lua_sandbox.hpp"
 
 namespace tendril::lua {
 
@@ -26,6 +27,8 @@ struct Trigger {
 namespace {
 
 const char* const kRuleMeta = "tendril.Rule";
+// The most values one application of a rule is given (a select list).
+constexpr int kMaxRuleArguments = 100000;
 
 
 int traceback(lua_State* L) {
@@ -46,6 +49,8 @@ std::string rule_name(lua_State* L, int idx) {
 std::string call(lua_State* L, int fn_idx, int first_arg, int nargs, int nresults) {
   fn_idx = lua_absindex(L, fn_idx);
   first_arg = lua_absindex(L, first_arg);
+  // The handler, the function, the model and a copy of every argument.
+  if (!lua_checkstack(L, nargs + 3)) return "too many arguments (" + std::to_string(nargs) + ") for Lua's stack";
   lua_pushcfunction(L, traceback);
   const int handler = lua_gettop(L);
   lua_pushvalue(L, fn_idx);
@@ -69,6 +74,7 @@ struct Outcome {
 
 // The transaction around one rule application (DESIGN principle 2).
 Outcome apply_rule(lua_State* L, Scene& s, int rule_idx, int first_arg, int nargs) {
+  const Sandbox::Production budget(L);  // --sandbox: the application's instruction limit
   rule_idx = lua_absindex(L, rule_idx);
   first_arg = lua_absindex(L, first_arg);
   const std::string name = rule_name(L, rule_idx);
@@ -200,13 +206,20 @@ int l_trigger(lua_State* L) {
   check_rule(L, lua_gettop(L), fn);
   auto t = std::make_unique<Trigger>();
   t->rule_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+  // Whole numbers up to 2^53 (every double above is whole, and a cast of
+  // one beyond 2^63 to an integer is undefined).
+  constexpr double kLargestWhole = 9007199254740992.0;
   const double every = field_number(L, 2, "every", fn, 0);
-  if (every < 0 || every != std::floor(every)) key_error(fn, "every", "must be a whole number of steps");
+  if (!(every >= 0 && every <= kLargestWhole) || every != std::floor(every))
+    key_error(fn, "every", "must be a whole number of steps up to 2^53");
   t->every = std::int64_t(every);
   const std::string on = field_string(L, 2, "on", fn, "");
   if (!on.empty() && on != "equilibrium") key_error(fn, "on", "must be \"equilibrium\"");
   t->on_equilibrium = on == "equilibrium";
-  t->max = std::int64_t(field_number(L, 2, "max", fn, -1));
+  const double max = field_number(L, 2, "max", fn, -1);
+  if (max != -1 && (!(max >= 0 && max <= kLargestWhole) || max != std::floor(max)))
+    key_error(fn, "max", "must be a whole number of applications from 0 to 2^53");
+  t->max = std::int64_t(max);
   for (auto [key, ref] : {std::pair{"when", &t->when_ref}, std::pair{"select", &t->select_ref}}) {
     lua_getfield(L, 2, key);
     if (lua_isnil(L, -1)) {
@@ -346,7 +359,11 @@ JournalScope::~JournalScope() {
 
 bool fire_triggers(lua_State* L, Scene& s, bool converged) {
   bool changed = false;
-  for (Trigger* t : s.triggers) {
+  // A rule or predicate may register triggers (m:trigger) while these fire:
+  // they join at the next step, and the loop runs over a copy that the push
+  // cannot invalidate. Triggers are never removed while the scene lives.
+  const std::vector<Trigger*> firing = s.triggers;
+  for (Trigger* t : firing) {
     if (t->max >= 0 && t->applied >= t->max) continue;
     bool due = false;
     if (t->every > 0) {
@@ -392,7 +409,14 @@ bool fire_triggers(lua_State* L, Scene& s, bool converged) {
         lua_rawgeti(L, selected, k);
         const int list = lua_gettop(L);
         if (lua_istable(L, list)) {
-          nargs = int(lua_rawlen(L, list));
+          const lua_Unsigned n = lua_rawlen(L, list);
+          // Lua's stack holds at most LUAI_MAXSTACK (a million) values.
+          if (n > lua_Unsigned(kMaxRuleArguments) || !lua_checkstack(L, int(n) + 8)) {
+            lua_settop(L, rule - 1);
+            throw LuaArgError("trigger 'select': argument list " + std::to_string(k) + " has " + std::to_string(n) +
+                              " values, more than a rule takes (" + std::to_string(kMaxRuleArguments) + ")");
+          }
+          nargs = int(n);
           for (int a = 1; a <= nargs; ++a) lua_rawgeti(L, list, a);
         }
         lua_remove(L, list);

@@ -1,4 +1,5 @@
 #include "io/atomic_file.hpp"
+#include "io/file_policy.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -62,6 +63,7 @@ void on_signal(int sig) {
 }  // namespace
 
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  check_writable(path_);  // a sandboxed scene writes in its output folder only
   // Writing through a symbolic link replaces the file it points to, not the link.
   std::error_code ec;
   if (std::filesystem::is_symlink(path_, ec)) {

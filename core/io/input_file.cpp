@@ -1,4 +1,5 @@
 #include "io/input_file.hpp"
+#include "io/file_policy.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -11,6 +12,7 @@
 namespace tendril {
 
 std::string read_input_file(const std::string& path, std::size_t max_bytes) {
+  check_readable(path);  // a sandboxed scene reads beside itself or in its output folder only
   auto refuse = [&](const std::string& why) -> InputError { return InputError("cannot read " + path + ": " + why); };
   // O_NONBLOCK: opening a FIFO without a writer must not wait for one.
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);

@@ -9,6 +9,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/input_file.hpp"
+#include "physics/settings_check.hpp"
 
 #include <algorithm>
 #include <array>
@@ -28,6 +29,15 @@ namespace {
 std::pair<unsigned, unsigned> edge_key(unsigned x, unsigned y) { return {std::min(x, y), std::max(x, y)}; }
 
 constexpr int kVersion = 1;
+
+// A name or value as an error message shows it: at most 40 characters, so
+// that a 50 MB attribute does not come back as a 50 MB message.
+std::string clipped(const char* v, std::size_t limit = 40) {
+  const std::size_t n = std::strlen(v);
+  if (n <= limit) return v;
+  return std::string(v, limit - 8) + "... (" + std::to_string(n) + " characters)";
+}
+std::string quoted(const char* v) { return "\"" + clipped(v) + "\""; }
 
 // 17 significant digits: every double reads back to the same bits.
 std::string number(double v) {
@@ -544,9 +554,9 @@ class Reader {
   [[noreturn]] void fail(const std::string& what) const { throw ModelFormatError(name_ + ": " + what); }
 
   static std::string tag(const tinyxml2::XMLElement* e) {
-    std::string s = std::string("<") + e->Name();
+    std::string s = "<" + clipped(e->Name());
     for (const char* key : {"id", "p", "a", "b"})
-      if (const char* v = e->Attribute(key)) s += std::string(" ") + key + "=\"" + v + "\"";
+      if (const char* v = e->Attribute(key)) s += std::string(" ") + key + "=" + quoted(v);
     return s + ">";
   }
   // The element, behind its block when it is a node, segment or edge.
@@ -579,7 +589,7 @@ class Reader {
                    std::map<std::pair<unsigned, unsigned>, int>& expected, const char* where) const;
   void no_children(const tinyxml2::XMLElement* e) const {
     if (const tinyxml2::XMLElement* c = e->FirstChildElement())
-      fail(c, std::string("unknown element <") + c->Name() + "> inside <" + e->Name() + ">");
+      fail(c, "unknown element <" + clipped(c->Name()) + "> inside <" + e->Name() + ">");
   }
   friend class Attributes;
 };
@@ -614,14 +624,14 @@ class Attributes {
     std::string s = v;
     if (s == "1" || s == "true") return true;
     if (s == "0" || s == "false") return false;
-    r_.fail(e_, std::string("attribute '") + name + "' is not 0 or 1: \"" + s + "\"");
+    r_.fail(e_, std::string("attribute '") + name + "' is not 0 or 1: " + quoted(v));
   }
   [[noreturn]] void bad(const char* name, const std::string& what) {
     r_.fail(e_, std::string("attribute '") + name + "' " + what);
   }
   void done() {
     for (const tinyxml2::XMLAttribute* a = e_->FirstAttribute(); a; a = a->Next())
-      if (!used_.count(a->Name())) r_.fail(e_, std::string("unknown attribute '") + a->Name() + "'");
+      if (!used_.count(a->Name())) r_.fail(e_, "unknown attribute '" + clipped(a->Name()) + "'");
   }
   // Section attributes shared by all blocks; EI is required for beams only,
   // which may also give GJ, EIy and EIz (0 or absent: as EI).
@@ -651,7 +661,7 @@ class Attributes {
     const std::string mode = v;
     if (mode == "form") m.mode = Membrane::FormFinding;
     else if (mode == "analysis") m.mode = Membrane::Analysis;
-    else bad("membrane", "must be \"form\" or \"analysis\" (absent: bars), not \"" + mode + "\"");
+    else bad("membrane", "must be \"form\" or \"analysis\" (absent: bars), not " + quoted(v));
     m.sigma_warp = real("sigma_warp");
     m.sigma_weft = real("sigma_weft");
     if (m.mode == Membrane::Analysis) {
@@ -681,10 +691,17 @@ class Attributes {
     if (v < end && *v == '+') ++v;
     double x = 0;
     auto r = std::from_chars(v, end, x);
-    if (r.ec == std::errc::result_out_of_range || (r.ec == std::errc() && r.ptr == end && !std::isfinite(x)))
-      bad(name, std::string("is not a finite number: \"") + e_->Attribute(name) + "\"");
-    if (r.ec != std::errc() || r.ptr != end || v == end)
-      bad(name, std::string("is not a number: \"") + e_->Attribute(name) + "\"");
+    if (r.ec == std::errc::result_out_of_range && r.ptr == end) {
+      // Too large (infinite) or too small (below 4.9e-324, not 0): from_chars
+      // tells not which, strtod does.
+      const bool tiny = std::strtod(std::string(v, end).c_str(), nullptr) == 0;
+      bad(name, std::string(tiny ? "is too small for a double (nonzero, below 4.9e-324): "
+                                 : "is too large for a double (above 1.8e308): ") +
+                    quoted(e_->Attribute(name)));
+    }
+    if (r.ec == std::errc() && r.ptr == end && v != end && !std::isfinite(x))
+      bad(name, "is not a finite number: " + quoted(e_->Attribute(name)));
+    if (r.ec != std::errc() || r.ptr != end || v == end) bad(name, "is not a number: " + quoted(e_->Attribute(name)));
     return x;
   }
   unsigned parse_index(const char* name, const char* v) {
@@ -692,7 +709,7 @@ class Attributes {
     std::uint32_t x = 0;
     auto r = std::from_chars(v, end, x);
     if (r.ec != std::errc() || r.ptr != end || v == end || x == kNone)
-      bad(name, std::string("is not a non-negative integer: \"") + v + "\"");
+      bad(name, "is not a non-negative integer: " + quoted(v));
     return x;
   }
   const Reader& r_;
@@ -707,7 +724,7 @@ void Reader::read_solver(const tinyxml2::XMLElement* e, SolverSettings& s) const
     bool found = false;
     for (Damping k : {Damping::None, Damping::Viscous, Damping::Kinetic})
       if (std::strcmp(d, damping_name(k)) == 0) s.damping = k, found = true;
-    if (!found) a.bad("damping", std::string("is \"") + d + "\"; expected none, viscous or kinetic");
+    if (!found) a.bad("damping", "is " + quoted(d) + "; expected none, viscous or kinetic");
   }
   s.viscous = a.real("viscous", s.viscous);
   s.geometric_factor = a.real("geometric_factor", s.geometric_factor);
@@ -715,32 +732,27 @@ void Reader::read_solver(const tinyxml2::XMLElement* e, SolverSettings& s) const
   if (const char* name = a.raw("integrator")) {
     auto i = parse_integrator(name);
     if (!i)
-      a.bad("integrator", std::string("is \"") + name +
-                              "\"; expected leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective "
+      a.bad("integrator", "is " + quoted(name) +
+                              "; expected leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective "
                               "or mixed");
     s.integrator = *i;
   }
   if (const char* name = a.raw("mass_mode")) {
     auto mm = parse_mass_mode(name);
-    if (!mm) a.bad("mass_mode", std::string("is \"") + name + "\"; expected fictitious or physical");
+    if (!mm) a.bad("mass_mode", "is " + quoted(name) + "; expected fictitious or physical");
     s.mass_mode = *mm;
   }
   if (const char* name = a.raw("mixed_implicit")) {
     auto i = parse_integrator(name);
     if (!i || (*i != Integrator::VariationalImplicitEuler && *i != Integrator::ProjectiveDynamics))
-      a.bad("mixed_implicit", std::string("is \"") + name + "\"; expected vie or projective");
+      a.bad("mixed_implicit", "is " + quoted(name) + "; expected vie or projective");
     else s.mixed_implicit = *i;
   }
-  s.vie_iterations = int(a.real("vie_iterations", s.vie_iterations));
+  // Out of range: 0, which check_settings refuses with the message every entry point gives.
+  s.vie_iterations = int(whole_number_in(a.real("vie_iterations", s.vie_iterations), 1, kMaxVieIterations).value_or(0));
   s.vie_dt = a.real("vie_dt", s.vie_dt);
   s.mixed_switch = a.real("mixed_switch", s.mixed_switch);
-  if (!(s.dt > 0)) a.bad("dt", "must be > 0");
-  if (!(s.vie_iterations >= 1)) a.bad("vie_iterations", "must be >= 1");
-  if (!(s.vie_dt >= 0)) a.bad("vie_dt", "must be >= 0");
-  if (!(s.mixed_switch > 0 && s.mixed_switch < 1)) a.bad("mixed_switch", "must be in (0, 1)");
-  if (!(s.viscous >= 0)) a.bad("viscous", "must be >= 0");
-  if (!(s.geometric_factor >= 0)) a.bad("geometric_factor", "must be >= 0");
-  if (!(s.mass_factor >= 1)) a.bad("mass_factor", "must be >= 1");
+  if (auto error = check_settings(s)) a.bad(error->key.c_str(), error->message);
   a.done();
   no_children(e);
 }
@@ -811,7 +823,7 @@ BlockRecord Reader::read_beam(const tinyxml2::XMLElement* e) const {
       rests.push_back(rest);
       if (b.dofs == 6) ends.emplace_back(ca.rotation(kEndANames), ca.rotation(kEndBNames));
     } else {
-      fail(c, std::string("unknown element <") + c->Name() + "> inside <beam>");
+      fail(c, "unknown element <" + clipped(c->Name()) + "> inside <beam>");
     }
     ca.done();
     no_children(c);
@@ -824,10 +836,7 @@ BlockRecord Reader::read_beam(const tinyxml2::XMLElement* e) const {
   if (rests.size() != segments)
     fail(e, std::to_string(n) + " <node> children need " + std::to_string(segments) + " <segment rest> children, got " +
                 std::to_string(rests.size()));
-  std::set<unsigned> seen;
-  for (std::size_t k = 0; k < n; ++k)
-    if (!seen.insert(b.nodes[k]).second)
-      fail(node_elements[k], "attribute 'p': particle " + std::to_string(b.nodes[k]) + " appears twice in the beam");
+  // A particle may come back on the same beam (a loop): add_beam says where not.
   for (std::size_t k = 0; k < segments; ++k) {
     b.edges.push_back({b.nodes[k], b.nodes[(k + 1) % n], rests[k]});
     if (b.dofs == 6) {
@@ -923,7 +932,7 @@ void Reader::read_edge_or_triangle(const tinyxml2::XMLElement* c, Attributes& ca
   } else if (std::strcmp(c->Name(), "triangle") == 0) {
     read_triangle(c, ca, b);
   } else {
-    fail(c, std::string("unknown element <") + c->Name() + "> inside <patch>");
+    fail(c, "unknown element <" + clipped(c->Name()) + "> inside <patch>");
   }
 }
 
@@ -1025,7 +1034,7 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
     const std::string name = e->Name();
     if (name != "solver" && name != "gravity" && name != "particles" && name != "blocks" && name != "joints" &&
         name != "goals")
-      fail(e, "unknown element <" + name + "> inside <tendril>");
+      fail(e, "unknown element <" + clipped(name.c_str()) + "> inside <tendril>");
     if (auto it = sections.find(name); it != sections.end())
       fail(e, "<" + name + "> is already given on line " + std::to_string(it->second->GetLineNum()));
     sections[name] = e;
@@ -1040,7 +1049,7 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
       Attributes(*this, e).done();
       for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
         if (std::strcmp(c->Name(), "goal") != 0)
-          fail(c, std::string("unknown element <") + c->Name() + "> inside <goals>");
+          fail(c, "unknown element <" + clipped(c->Name()) + "> inside <goals>");
         Attributes a(*this, c);
         GoalRecord r;
         r.element = c;
@@ -1064,7 +1073,7 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
       Attributes(*this, e).done();
       for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
         if (std::strcmp(c->Name(), "joint") != 0)
-          fail(c, std::string("unknown element <") + c->Name() + "> inside <joints>");
+          fail(c, "unknown element <" + clipped(c->Name()) + "> inside <joints>");
         Attributes a(*this, c);
         JointRecord j;
         j.element = c;
@@ -1080,7 +1089,7 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
       Attributes(*this, e).done();
       for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
         if (std::strcmp(c->Name(), "particle") != 0)
-          fail(c, std::string("unknown element <") + c->Name() + "> inside <particles>");
+          fail(c, "unknown element <" + clipped(c->Name()) + "> inside <particles>");
         ParticleRecord p = read_particle(c);
         if (auto [it, fresh] = particle_ids.emplace(p.id, c); !fresh)
           fail(c, "attribute 'id': particle " + std::to_string(p.id) + " is already defined on line " +
@@ -1095,7 +1104,7 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
         if (kind == "cable") b = read_cable(c);
         else if (kind == "beam") b = read_beam(c);
         else if (kind == "patch") b = read_patch(c);
-        else fail(c, "unknown element <" + kind + "> inside <blocks>");
+        else fail(c, "unknown element <" + clipped(kind.c_str()) + "> inside <blocks>");
         if (auto [it, fresh] = block_ids.emplace(b.id, c); !fresh)
           fail(c, "attribute 'id': block " + std::to_string(b.id) + " is already defined on line " +
                       std::to_string(it->second->GetLineNum()));
@@ -1150,24 +1159,29 @@ void build(const Reader& reader, const Document& d, Model& m) {
       }
       // Blocks take rest lengths from the current distances; the stored
       // ones win. Bars and lumped masses follow in rebuild_elements below.
-      std::map<std::pair<ParticleId, ParticleId>, double> rest;
-      for (const EdgeRecord& e : r.edges) {
-        ParticleId a = id_of.at(e.a), c = id_of.at(e.b);
-        rest[{std::min(a, c), std::max(a, c)}] = e.rest;
-      }
-      for (Dart x : m.map.orbit(kComponentOrbit, m.blocks[b].dart)) {
-        ParticleId a = m.dart_particle[x], c = m.dart_particle[m.map.alpha(0, x)];
-        m.rest_length[x] = rest.at({std::min(a, c), std::max(a, c)});
-      }
-      if (r.kind == BlockKind::Beam && r.dofs == 6) {
-        // The stored beam ends, segment by segment along the path; the
+      if (r.kind == BlockKind::Beam) {
+        // Segment by segment along the path (a loop may pass the same pair
+        // of particles twice), with the stored ends of a 6-DOF beam; the
         // Beam6 elements follow in rebuild_elements below.
-        m.blocks[b].dofs = 6;
+        if (r.dofs == 6) m.blocks[b].dofs = 6;
         Dart d = m.blocks[b].dart;
         for (const EdgeRecord& e : r.edges) {
-          m.beam_end[d] = e.end_a;
-          m.beam_end[m.map.alpha(0, d)] = e.end_b;
+          m.rest_length[d] = m.rest_length[m.map.alpha(0, d)] = e.rest;
+          if (r.dofs == 6) {
+            m.beam_end[d] = e.end_a;
+            m.beam_end[m.map.alpha(0, d)] = e.end_b;
+          }
           d = m.map.alpha(1, m.map.alpha(0, d));
+        }
+      } else {
+        std::map<std::pair<ParticleId, ParticleId>, double> rest;
+        for (const EdgeRecord& e : r.edges) {
+          ParticleId a = id_of.at(e.a), c = id_of.at(e.b);
+          rest[{std::min(a, c), std::max(a, c)}] = e.rest;
+        }
+        for (Dart x : m.map.orbit(kComponentOrbit, m.blocks[b].dart)) {
+          ParticleId a = m.dart_particle[x], c = m.dart_particle[m.map.alpha(0, x)];
+          m.rest_length[x] = rest.at({std::min(a, c), std::max(a, c)});
         }
       }
       if (r.membrane.cst()) {  // the stored triangles and reference shapes
@@ -1209,15 +1223,63 @@ void build(const Reader& reader, const Document& d, Model& m) {
   }
 }
 
+// tinyxml2 checks each new attribute against all before it: an element with
+// 40 000 attributes took 17 s to parse. No element of the format has more
+// than 24, so a tag with more than kMaxAttributes is refused before parsing,
+// by a linear scan that counts the '=' of each tag outside quoted values
+// (comments, CDATA, declarations and processing instructions skipped).
+constexpr std::size_t kMaxAttributes = 64;
+
+void refuse_crowded_tags(const std::string& xml, const std::string& name) {
+  const std::size_t n = xml.size();
+  std::size_t line = 1;
+  auto skip_to = [&](std::size_t from, const char* end) {
+    const std::size_t at = xml.find(end, from);
+    const std::size_t stop = at == std::string::npos ? n : at + std::strlen(end);
+    line += std::size_t(std::count(xml.begin() + std::ptrdiff_t(from), xml.begin() + std::ptrdiff_t(stop), '\n'));
+    return stop;
+  };
+  for (std::size_t k = 0; k < n;) {
+    if (xml[k] == '\n') ++line;
+    if (xml[k] != '<') {
+      ++k;
+      continue;
+    }
+    if (xml.compare(k, 4, "<!--") == 0) k = skip_to(k, "-->");
+    else if (xml.compare(k, 9, "<![CDATA[") == 0) k = skip_to(k, "]]>");
+    else if (xml.compare(k, 2, "<?") == 0) k = skip_to(k, "?>");
+    else if (xml.compare(k, 2, "<!") == 0) k = skip_to(k, ">");
+    else {
+      const std::size_t tag_line = line;
+      std::size_t equals = 0;
+      char quote = 0;
+      for (++k; k < n && (quote || xml[k] != '>'); ++k) {
+        if (xml[k] == '\n') ++line;
+        if (quote) {
+          if (xml[k] == quote) quote = 0;
+        } else if (xml[k] == '"' || xml[k] == '\'') {
+          quote = xml[k];
+        } else if (xml[k] == '=' && ++equals > kMaxAttributes) {
+          throw ModelFormatError(name + ":" + std::to_string(tag_line) + ": an element with more than " +
+                                 std::to_string(kMaxAttributes) +
+                                 " attributes; no element of a model database has more than 24");
+        }
+      }
+    }
+  }
+}
+
 void load(const std::string& xml, const std::string& name, Model& m, SolverSettings& s) {
   if (m.particles.capacity() != 0 || !m.blocks.empty() || m.map.capacity() != 0)
     throw ModelError("load_model_xml: the target model must be a fresh Model");
+  refuse_crowded_tags(xml, name);
   tinyxml2::XMLDocument doc;
   doc.Parse(xml.data(), xml.size());
   if (doc.ErrorID() == tinyxml2::XML_ERROR_EMPTY_DOCUMENT)
     throw ModelFormatError(name + ": no root element; expected <tendril version=\"1\">");
   if (doc.Error())
-    throw ModelFormatError(name + ":" + std::to_string(doc.ErrorLineNum()) + ": malformed XML: " + doc.ErrorStr());
+    throw ModelFormatError(name + ":" + std::to_string(doc.ErrorLineNum()) + ": malformed XML: " +
+                           clipped(doc.ErrorStr(), 200));
   Reader reader(name);
   Document d = reader.read(doc);
   {

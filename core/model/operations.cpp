@@ -8,6 +8,7 @@
 #include <set>
 
 #include "model/frames.hpp"
+#include "model/limits.hpp"
 #include "model/model.hpp"
 
 namespace tendril {
@@ -20,6 +21,7 @@ std::string pid(ParticleId p) { return std::to_string(p); }
 
 ParticleId Model::add_particle(const Vec3& x) {
   if (!x.allFinite()) throw ModelError("add_particle: position is not finite");
+  check_coordinates(x, "add_particle");  // (finite: checked above, for its message)
   return new_particle(x);
 }
 
@@ -50,10 +52,14 @@ ParticleId Model::merge(const std::vector<ParticleId>& ps) {
                          " share an edge; merging them would collapse it");
       if (n != d && !map.is_free(1, n)) {
         Dart far = map.alpha(0, map.alpha(1, n));
-        if (far != map.alpha(1, n) && set.count(dart_particle[far]) && dart_particle[far] != p)
+        if (far != map.alpha(1, n) && set.count(dart_particle[far]) && dart_particle[far] != p) {
           if (blocks[dart_block[d]].kind == BlockKind::Beam)
             throw ModelError("merge: particles " + pid(p) + " and " + pid(dart_particle[far]) +
                              " are two apart on a beam; merging them would fold it");
+          if (blocks[dart_block[d]].kind == BlockKind::Patch)
+            throw ModelError("merge: particles " + pid(p) + " and " + pid(dart_particle[far]) +
+                             " are diagonal corners of a patch quad; merging them would collapse it");
+        }
       }
     }
   }
@@ -225,13 +231,18 @@ BlockId Model::add_beam(const std::vector<ParticleId>& ps, const Section& s, boo
   const std::size_t n = ps.size();
   if (n < (closed ? 3u : 2u))
     throw ModelError(std::string("beam: needs at least ") + (closed ? "3" : "2") + " particles, got " + std::to_string(n));
-  std::set<ParticleId> seen;
-  for (ParticleId p : ps) {
-    require_particle(p, "beam");
-    if (!seen.insert(p).second) throw ModelError("beam: particle " + pid(p) + " appears twice");
-  }
+  for (ParticleId p : ps) require_particle(p, "beam");
   check_section(s, "beam", true);
   const std::size_t segments = closed ? n : n - 1;
+  // A particle may come back on the same beam (a loop or a drop, as merging
+  // its ends makes: ring_loop, drop_single), but not one or two places on,
+  // which would collapse a segment or fold the beam onto itself (the merges
+  // that make those are refused too).
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t gap = 1; gap <= 2; ++gap)
+      if ((closed || k + gap < n) && ps[k] == ps[(k + gap) % n])
+        throw ModelError("beam: particle " + pid(ps[k]) + " appears twice " + (gap == 1 ? "in a row" : "two apart") +
+                         (gap == 1 ? "; a segment needs two particles" : "; the beam would fold onto itself"));
   for (std::size_t k = 0; k < segments; ++k) {
     ParticleId a = ps[k], b = ps[(k + 1) % n];
     if ((particles.position[a] - particles.position[b]).norm() <= 0)
@@ -387,7 +398,7 @@ void Model::delete_beam(BlockId b) {
 BlockId Model::add_quad_grid(const std::vector<ParticleId>& grid, int rows, int cols, const Section& s) {
   if (rows < 2 || cols < 2) throw ModelError("quad_grid: needs at least 2 rows and 2 columns");
   if (grid.size() != std::size_t(rows) * cols)
-    throw ModelError("quad_grid: expected " + std::to_string(rows * cols) + " particles, got " + std::to_string(grid.size()));
+    throw ModelError("quad_grid: expected " + std::to_string(std::size_t(rows) * std::size_t(cols)) + " particles, got " + std::to_string(grid.size()));
   std::set<ParticleId> seen;
   for (ParticleId p : grid) {
     require_particle(p, "quad_grid");

@@ -103,6 +103,7 @@ void Solver::compute_forces() {
 }
 
 void Solver::step() {
+  if (steps_ % kRunawayCheckEvery == 0) check_runaway();
   size_scratch();
   if (fused_kick_drift_applies()) {
     mixed_implicit_ = false, mixed_peak_ = 0;

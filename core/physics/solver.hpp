@@ -188,6 +188,17 @@ class Solver {
   void accumulate_goal_forces(const Vec3* x, Vec3* F, double* S) const;   // goal_forces.cpp
   void accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const;    // cst_forces.cpp
   void size_scratch();
+  // runaway.cpp: every kRunawayCheckEvery steps, one pass over the positions
+  // stops (NumericalError naming the particle) a model whose extent grew a
+  // millionfold since the last topology change, or that left kMaxCoordinate.
+  static constexpr std::uint64_t kRunawayCheckEvery = 64;
+  void check_runaway();
+  struct RunawayReference {
+    std::uint64_t revision = ~std::uint64_t(0);  // the model revision it was measured at
+    std::uint64_t step = 0;
+    double extent = 0;  // the largest side of the box around every particle [m]
+    Vec3 centre = Vec3::Zero();
+  } runaway_;
   void prepare_masses();  // mass_, inertia_ and residual_; throws before anything moves
   void stage_forces();    // forces at xs_ into Fs_, Ss_; throws if not finite
   double viscous_rate() const;  // c * dt = C when viscous, else 0

@@ -6,7 +6,13 @@
 
 namespace tendril {
 
-std::int64_t NeighbourIndex::coord(double v) const { return static_cast<std::int64_t>(std::floor(v / cell_)); }
+// Clamped to +-2^62 before the cast (a centre at 1e300 would overflow it), so
+// that a cell index plus a few neighbours stays in range too. Far cells
+// alias, and the distance test sorts them out.
+std::int64_t NeighbourIndex::coord(double v) const {
+  constexpr double kFar = 4611686018427387904.0;  // 2^62
+  return static_cast<std::int64_t>(std::clamp(std::floor(v / cell_), -kFar, kFar));
+}
 
 std::uint64_t NeighbourIndex::key(std::int64_t x, std::int64_t y, std::int64_t z) const {
   // 21 bits per axis (two's complement, wrapped): distinct cells far apart

@@ -163,6 +163,12 @@ inputs() {
     [ "$status" -eq 1 ] && grep -q "cannot read $file" "$work/stderr-in" || fail "load $file: $status $(cat "$work/stderr-in")"
   done
   note "inputs: a directory, a FIFO and /dev/zero refused at once with exit 1"
+  # A journal's comments reach the terminal without their control characters.
+  printf '# \033]0;owned\007 \033[2J\r forged\nparticle 0x0p+0 0x0p+0 0x0p+0\n' >"$out/escapes.journal"
+  "$tendril" replay "$out/escapes.journal" --out "$out/replayed" >"$work/stdout-in" 2>&1 || fail "replay escapes: $(cat "$work/stdout-in")"
+  ! LC_ALL=C grep -q "$(printf '[\033\007\r]')" "$work/stdout-in" || fail "replay printed control characters"
+  grep -qF '\x1b]0;owned\x07 \x1b[2J\x0d forged' "$work/stdout-in" || fail "replay escapes: $(cat "$work/stdout-in")"
+  note "inputs: a journal's escape sequences are shown as \\xHH, not sent to the terminal"
 }
 
 case $part in
