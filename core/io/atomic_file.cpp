@@ -2,6 +2,7 @@
 #include "io/file_policy.hpp"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -75,13 +76,21 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   if (exists && S_ISDIR(old.st_mode)) throw OutputError("cannot write " + path_ + ": it is a directory");
   const std::string name = std::filesystem::path(path_).filename().string();
   temp_ = folder_of(path_) + "/." + name + ".tmp-XXXXXX";
+  // The signals that clean up are held until the new file is in the table,
+  // so that none arrives between its creation and its registration.
+  sigset_t cleaning, before;
+  sigemptyset(&cleaning);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&cleaning, sig);
+  pthread_sigmask(SIG_BLOCK, &cleaning, &before);
   fd_ = ::mkostemp(temp_.data(), O_CLOEXEC);
+  const int error = errno;
+  if (fd_ >= 0) slot_ = claim_slot(temp_);
+  pthread_sigmask(SIG_SETMASK, &before, nullptr);
   if (fd_ < 0) {
-    const std::string reason = std::strerror(errno);
+    const std::string reason = std::strerror(error);
     throw OutputError("cannot write " + path_ + ": cannot create a file in " + folder_of(path_) + ": " + reason);
   }
   temp_exists_ = true;
-  slot_ = claim_slot(temp_);
   if (::fchmod(fd_, exists ? (old.st_mode & 07777) : new_file_mode()) != 0) fail("cannot set its permissions");
 }
 

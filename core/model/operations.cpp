@@ -280,6 +280,7 @@ BlockId Model::add_beam_from(ParticleId start, const Vec3& span, int segments, c
     points.push_back(points[0] + span * (double(k) / segments));
     if (!points.back().allFinite() || points.back() == points[k - 1])
       throw ModelError("beam_from: the segments are too short to tell their ends apart at this position");
+    check_coordinates(points.back(), "beam_from");
   }
   std::vector<ParticleId> ps{start};
   for (int k = 1; k <= segments; ++k) ps.push_back(new_particle(points[k]));

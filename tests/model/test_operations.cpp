@@ -699,14 +699,17 @@ TEST_CASE("rule 10: invalid add_beam_from requests are refused without a trace")
 // finiteness check on start + span, a span that overflows builds a beam whose
 // particle is at infinity (check(): "rest length differs across its edge").
 // Fixed; kept as a regression test:
+// (Since issue 13 no particle may be beyond 1e12 m: the far ones of the
+// original case, 1e17 and 1e308, are refused where they would be made.)
 TEST_CASE("regression: add_beam_from leaves particles behind when add_beam refuses") {
   Model m;
-  const ParticleId p = m.add_particle(Vec3(1e17, 0, 0));
-  expect_refused(m, [&] { m.add_beam_from(p, Vec3(1, 0, 0), 1, beam_section()); }, "span below the ulp");
-  // particle_count goes 1 -> 2 although ModelError was thrown.
-  const ParticleId q = m.add_particle(Vec3(1e308, 0, 0));
-  expect_refused(m, [&] { m.add_beam_from(q, Vec3(1e308, 0, 0), 2, beam_section()); }, "span overflowing");
-  // not refused at all; check() != "" afterwards.
+  CHECK_THROWS_AS(m.add_particle(Vec3(1e17, 0, 0)), ModelError);
+  const ParticleId p = m.add_particle(Vec3(1e12, 0, 0));  // its ulp is 1.2e-4 m
+  expect_refused(m, [&] { m.add_beam_from(p, Vec3(1e-5, 0, 0), 1, beam_section()); }, "span below the ulp");
+  // particle_count went 1 -> 2 although ModelError was thrown.
+  expect_refused(m, [&] { m.add_beam_from(p, Vec3(1e308, 0, 0), 2, beam_section()); }, "span beyond 1e12 m");
+  // was not refused at all; check() != "" afterwards.
+  CHECK(m.particle_count() == 1);
 }
 
 // --- rule 13: a particle inserted between two consecutive ones -----------------------------
