@@ -82,11 +82,13 @@ int run_scene(const std::string& path, const SceneOptions& given, std::string* e
 
   // The scene's own modules: require("lib.name") finds lib/name.lua beside it.
   const std::string dir = std::filesystem::path(path).parent_path().string();
-  lua_getglobal(L, "package");
-  lua_pushstring(L, ((dir.empty() ? std::string(".") : dir) + "/?.lua;").c_str());
-  lua_getfield(L, -2, "path");
-  lua_concat(L, 2);
-  lua_setfield(L, -2, "path");
+  // (--sandbox has no package library: nothing to extend there.)
+  if (lua_getglobal(L, "package") == LUA_TTABLE) {
+    lua_pushstring(L, ((dir.empty() ? std::string(".") : dir) + "/?.lua;").c_str());
+    lua_getfield(L, -2, "path");
+    lua_concat(L, 2);
+    lua_setfield(L, -2, "path");
+  }
   lua_pop(L, 1);
 
   lua_pushcfunction(L, traceback);
