@@ -10,6 +10,7 @@
 #include "io/input_file.hpp"
 #include "io/model_xml.hpp"
 #include "io/obj.hpp"
+#include "command/replay.hpp"
 #include "io/trace.hpp"
 
 namespace tendril::app {

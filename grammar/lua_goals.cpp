@@ -3,31 +3,24 @@
 #include <string>
 #include <utility>
 
-#include "io/trace.hpp"
 #include "lua_args.hpp"
+#include "lua_commands.hpp"
 #include "lua_scene.hpp"
 
 namespace tendril::lua {
 
 namespace {
 
-// Adds the goal, journals it and returns its 1-based index.
-int push_goal(lua_State* L, Scene& s, const Goal& g) {
-  const std::size_t id = s.model.add_goal(g);
-  const Goal& a = std::as_const(s.model.goals)[id];
-  std::string line = std::string("goal ") + goal_kind_name(a.kind) + " " + std::to_string(a.i);
-  if (a.kind == Goal::Length) line += " " + std::to_string(a.j) + " " + Trace::number(a.length);
-  else line += " " + Trace::vec(a.point);
-  if (a.kind == Goal::Plane || a.kind == Goal::Line) line += " " + Trace::vec(a.direction);
-  s.record(line + " " + Trace::number(a.weight));
-  lua_pushinteger(L, lua_Integer(id + 1));
-  return 1;
-}
-
-std::size_t check_goal(lua_State* L, int idx, Scene& s, const char* fn) {
-  const std::int64_t g = check_integer(L, idx, fn) - 1;
-  if (g < 0 || std::size_t(g) >= s.model.goals.size()) arg_error(fn, idx, "no such goal");
-  return std::size_t(g);
+// Adds the goal through its command and returns its 1-based index.
+int push_goal(lua_State* L, Scene& s, const Goal& g, const char* fn) {
+  using command::Value;
+  command::Args args = {Value::of_word(goal_kind_name(g.kind)), Value::of_id(g.i), Value::of_id(g.j),
+                        Value::of_number(g.length), Value::of_vector(g.point), Value::of_vector(g.direction),
+                        Value::of_number(g.weight)};
+  if (g.kind != Goal::Length) args[2] = args[3] = Value::absent();
+  else args[4] = Value::absent();
+  if (g.kind != Goal::Plane && g.kind != Goal::Line) args[5] = Value::absent();
+  return push_result(L, s, apply_command(L, s, "goal", std::move(args), fn));
 }
 
 // m:anchor(p, {x, y, z}, weight): pulls p to the point.
@@ -39,7 +32,7 @@ int l_anchor(lua_State* L) {
   g.i = check_particle(L, 2, s, fn);
   g.point = check_vec3(L, 3, fn);
   g.weight = check_number(L, 4, fn);
-  return push_goal(L, s, g);
+  return push_goal(L, s, g, fn);
 }
 
 // m:goal{kind =, particle = | particles = {p, q}, point =, normal = |
@@ -76,32 +69,7 @@ int l_goal(lua_State* L) {
       g.direction = field_vec3(L, 2, axis, fn);
     }
   }
-  return push_goal(L, s, g);
-}
-
-// m:goal_weight(g): the weight; m:goal_weight(g, w) sets it.
-int l_goal_weight(lua_State* L) {
-  const char* fn = "goal_weight";
-  Scene& s = check_scene(L, fn);
-  const std::size_t g = check_goal(L, 2, s, fn);
-  if (lua_isnoneornil(L, 3)) {
-    lua_pushnumber(L, s.model.goals[g].weight);
-    return 1;
-  }
-  const double w = check_number(L, 3, fn);
-  s.model.set_goal_weight(g, w);
-  s.record("goal_weight " + std::to_string(g) + " " + Trace::number(w));
-  return 0;
-}
-
-// m:remove_goal(g): later goals move down by one.
-int l_remove_goal(lua_State* L) {
-  const char* fn = "remove_goal";
-  Scene& s = check_scene(L, fn);
-  const std::size_t g = check_goal(L, 2, s, fn);
-  s.model.remove_goal(g);
-  s.record("remove_goal " + std::to_string(g));
-  return 0;
+  return push_goal(L, s, g, fn);
 }
 
 }  // namespace
@@ -109,8 +77,6 @@ int l_remove_goal(lua_State* L) {
 void add_goal_methods(lua_State* L) {
   set_fn<l_anchor>(L, "anchor");
   set_fn<l_goal>(L, "goal");
-  set_fn<l_goal_weight>(L, "goal_weight");
-  set_fn<l_remove_goal>(L, "remove_goal");
 }
 
 }  // namespace tendril::lua

@@ -12,6 +12,7 @@
 #include "catmull_clark_rules.hpp"
 #include "edge_classification.hpp"
 #include "lua_args.hpp"
+#include "lua_commands.hpp"
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
 #include "paving.hpp"
@@ -84,13 +85,11 @@ int field_count(lua_State* L, int idx, const char* key, const char* fn, int fall
 // The trace lines of a committed patch, in the order commit_patch made the
 // changes: moves, new particles, the patch.
 void record_patch(Scene& s, const meshing::CommittedPatch& c, const Section& sec) {
+  using command::Value;
   const Model& m = s.model;
-  for (ParticleId p : c.moved) s.record("position " + std::to_string(p) + " " + Trace::vec(m.particles.position[p]));
-  for (ParticleId p : c.created) s.record("particle " + Trace::vec(m.particles.position[p]));
-  std::string line = "patch " + Trace::section(sec);
-  for (const Model::Quad& q : c.quads)
-    for (ParticleId p : q) line += " " + std::to_string(p);
-  s.record(line);
+  for (ParticleId p : c.moved) record_command(s, "position", {Value::of_id(p), Value::of_vector(m.particles.position[p])});
+  for (ParticleId p : c.created) record_command(s, "particle", {Value::of_vector(m.particles.position[p])});
+  record_patch_command(s, sec, c.quads);
 }
 
 // holes = {{...}, {...}}: a list of particle lists (may be empty).
@@ -123,7 +122,7 @@ std::vector<std::vector<ParticleId>> field_holes(lua_State* L, int idx, Scene& s
 int l_pave(lua_State* L) {
   const char* fn = "pave";
   Scene& s = check_scene(L, fn);
-  JournalScope record(s, fn, describe_args(L, 2, lua_gettop(L)));
+  command::Entry record(s.session, fn, describe_args(L, 2, lua_gettop(L)));
   check_table(L, 2, fn);
   check_keys(L, 2, fn, {"particles", "holes", "EA", "E", "A", "prestress", "line_mass"});
   const Section sec = read_patch_section(L, 2, fn, {}, true);
@@ -140,7 +139,7 @@ int l_pave(lua_State* L) {
 int l_catmull_clark(lua_State* L) {
   const char* fn = "catmull_clark";
   Scene& s = check_scene(L, fn);
-  JournalScope record(s, fn, describe_args(L, 2, lua_gettop(L)));
+  command::Entry record(s.session, fn, describe_args(L, 2, lua_gettop(L)));
   check_table(L, 2, fn);
   check_keys(L, 2, fn, {"particles", "levels", "EA", "E", "A", "prestress", "line_mass"});
   const Section sec = read_patch_section(L, 2, fn, {}, true);
@@ -159,7 +158,7 @@ int l_catmull_clark(lua_State* L) {
 int l_project(lua_State* L) {
   const char* fn = "project";
   Scene& s = check_scene(L, fn);
-  JournalScope record(s, fn, describe_args(L, 2, lua_gettop(L)));
+  command::Entry record(s.session, fn, describe_args(L, 2, lua_gettop(L)));
   check_table(L, 2, fn);
   check_keys(L, 2, fn, {"from", "to", "rows", "closed", "EA", "E", "A", "prestress", "line_mass"});
   const Section sec = read_patch_section(L, 2, fn, {}, true);
@@ -189,7 +188,7 @@ void push_particle_list(lua_State* L, Scene& s, const std::vector<ParticleId>& p
 int l_tube(lua_State* L) {
   const char* fn = "tube";
   Scene& s = check_scene(L, fn);
-  JournalScope record(s, fn, describe_args(L, 2, lua_gettop(L)));
+  command::Entry record(s.session, fn, describe_args(L, 2, lua_gettop(L)));
   check_table(L, 2, fn);
   check_keys(L, 2, fn, {"between", "rows", "rings", "EA", "E", "A", "prestress", "line_mass"});
   const Section sec = read_patch_section(L, 2, fn, {}, true);
@@ -200,7 +199,7 @@ int l_tube(lua_State* L) {
   const auto t = as_method(fn, "tube", [&] {
     return meshing::tube_between_patches(s.model, ends[0], ends[1], rows, sec, rings);
   });
-  for (ParticleId q : t.removed) s.record("remove_from_patch " + std::to_string(q));
+  for (ParticleId q : t.removed) record_command(s, "remove_from_patch", {command::Value::of_id(q)});
   record_patch(s, t.tube, sec);
   push_block(L, s, t.tube.patch);
   push_particle_list(L, s, t.rim_a);
@@ -215,7 +214,7 @@ int l_tube(lua_State* L) {
 int l_subdivide_patch(lua_State* L) {
   const char* fn = "subdivide_patch";
   Scene& s = check_scene(L, fn);
-  JournalScope record(s, fn, describe_args(L, 2, lua_gettop(L)));
+  command::Entry record(s.session, fn, describe_args(L, 2, lua_gettop(L)));
   const BlockId b = check_block(L, 2, s, fn);
   if (s.model.blocks[b].kind != BlockKind::Patch)
     arg_error(fn, 2, std::string("expected a patch, got a ") + block_kind_name(s.model.blocks[b].kind));

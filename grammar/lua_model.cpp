@@ -11,7 +11,9 @@
 
 #include "io/model_xml.hpp"
 #include "io/obj.hpp"
+#include "command/registry.hpp"
 #include "lua_args.hpp"
+#include "lua_commands.hpp"
 #include "lua_files.hpp"
 #include "lua_csv.hpp"
 #include "lua_meshing.hpp"
@@ -23,12 +25,15 @@
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
 #include "model/model.hpp"
+#include "physics/settings_check.hpp"
 #include "physics/solver.hpp"
 #include "run_progress.hpp"
 
 namespace tendril::lua {
 
 namespace {
+
+using command::Value;
 
 // The particle list, or the particle, stored under `key` of the table at idx.
 std::vector<ParticleId> field_particle_list(lua_State* L, int idx, const char* key, Scene& s, const char* fn) {
@@ -82,6 +87,11 @@ Section read_section(lua_State* L, int idx, const char* fn, bool beam) {
   return s;
 }
 
+// A section as the command's four section arguments (EA, EI, prestress, line_mass).
+void append_section(command::Args& args, const Section& sec) {
+  for (double x : {sec.EA, sec.EI, sec.prestress, sec.line_mass}) args.push_back(Value::of_number(x));
+}
+
 std::uint8_t parse_axes(const std::string& axes, const char* fn) {
   if (axes == "all") return kLockTranslation;
   if (axes == "full") return kLockTranslation | kLockRotation;
@@ -113,55 +123,39 @@ std::string axes_string(std::uint8_t bits) {
   return s;
 }
 
-Damping parse_damping(const std::string& name, const char* fn) {
-  if (name == "kinetic") return Damping::Kinetic;
-  if (name == "viscous") return Damping::Viscous;
-  if (name == "none") return Damping::None;
-  throw LuaArgError(std::string(fn) + ": damping must be \"kinetic\", \"viscous\" or \"none\", got \"" + name + "\"");
-}
 
 const std::initializer_list<const char*> kSettingKeys = {
     "dt",       "damping",   "viscous",        "geometric_factor", "mass_factor", "gravity",
     "integrator", "mass_mode", "vie_iterations", "vie_dt",           "mixed_switch",
     "mixed_implicit", "threads"};
 
+// The option table at idx over the solver's current settings: the command
+// takes every key (the journal keeps the whole set), then gravity; threads
+// change no number and are not journaled.
 void apply_settings(lua_State* L, int idx, Scene& s, const char* fn) {
-  SolverSettings& st = s.solver.settings;
-  st.dt = field_number(L, idx, "dt", fn, st.dt);
-  if (!(st.dt > 0)) key_error(fn, "dt", "must be > 0");
-  st.damping = parse_damping(field_string(L, idx, "damping", fn, damping_name(st.damping)), fn);
-  st.viscous = field_number(L, idx, "viscous", fn, st.viscous);
-  if (!(st.viscous >= 0 && st.viscous < 2)) key_error(fn, "viscous", "must be in [0, 2)");
-  st.geometric_factor = field_number(L, idx, "geometric_factor", fn, st.geometric_factor);
-  st.mass_factor = field_number(L, idx, "mass_factor", fn, st.mass_factor);
-  if (!(st.mass_factor >= 1)) key_error(fn, "mass_factor", "must be >= 1");
-  if (has_field(L, idx, "gravity")) s.model.gravity = field_vec3(L, idx, "gravity", fn);
-  const std::string integrator = field_string(L, idx, "integrator", fn, integrator_name(st.integrator));
-  if (auto i = parse_integrator(integrator)) st.integrator = *i;
-  else
-    key_error(fn, "integrator",
-              "must be \"leapfrog\", \"symplectic_euler\", \"velocity_verlet\", \"midpoint\", \"rk4\", \"vie\", "
-              "\"projective\" or \"mixed\", got \"" +
-                  integrator + "\"");
-  const std::string mass_mode = field_string(L, idx, "mass_mode", fn, mass_mode_name(st.mass_mode));
-  if (auto m = parse_mass_mode(mass_mode)) st.mass_mode = *m;
-  else key_error(fn, "mass_mode", "must be \"fictitious\" or \"physical\", got \"" + mass_mode + "\"");
-  const double iterations = field_number(L, idx, "vie_iterations", fn, st.vie_iterations);
-  if (!(iterations >= 1 && iterations <= 1000) || iterations != std::floor(iterations))
-    key_error(fn, "vie_iterations", "must be a whole number from 1 to 1000");
-  st.vie_iterations = int(iterations);
-  st.vie_dt = field_number(L, idx, "vie_dt", fn, st.vie_dt);
-  if (!(st.vie_dt >= 0) || !std::isfinite(st.vie_dt)) key_error(fn, "vie_dt", "must be >= 0 (0: dt)");
-  const std::string implicit = field_string(L, idx, "mixed_implicit", fn, integrator_name(st.mixed_implicit));
-  if (implicit == "vie") st.mixed_implicit = Integrator::VariationalImplicitEuler;
-  else if (implicit == "projective") st.mixed_implicit = Integrator::ProjectiveDynamics;
-  else key_error(fn, "mixed_implicit", "must be \"vie\" or \"projective\", got \"" + implicit + "\"");
-  st.mixed_switch = field_number(L, idx, "mixed_switch", fn, st.mixed_switch);
-  if (!(st.mixed_switch > 0 && st.mixed_switch < 1)) key_error(fn, "mixed_switch", "must be in (0, 1)");
-  const double threads = field_number(L, idx, "threads", fn, st.threads);
-  if (!(threads >= 1 && threads <= 64) || threads != std::floor(threads))
-    key_error(fn, "threads", "must be a whole number from 1 to 64");
-  st.threads = int(threads);
+  const SolverSettings& st = s.solver.settings;
+  auto whole = [&](const char* key, double fallback, std::int64_t least, std::int64_t most) {
+    const auto n = whole_number_in(field_number(L, idx, key, fn, fallback), least, most);
+    if (!n) key_error(fn, key, "must be a whole number from " + std::to_string(least) + " to " + std::to_string(most));
+    return *n;
+  };
+  const command::Args settings = {
+      Value::of_number(field_number(L, idx, "dt", fn, st.dt)),
+      Value::of_word(field_string(L, idx, "damping", fn, damping_name(st.damping))),
+      Value::of_number(field_number(L, idx, "viscous", fn, st.viscous)),
+      Value::of_number(field_number(L, idx, "geometric_factor", fn, st.geometric_factor)),
+      Value::of_number(field_number(L, idx, "mass_factor", fn, st.mass_factor)),
+      Value::of_word(field_string(L, idx, "integrator", fn, integrator_name(st.integrator))),
+      Value::of_word(field_string(L, idx, "mass_mode", fn, mass_mode_name(st.mass_mode))),
+      Value::of_id(std::uint64_t(whole("vie_iterations", st.vie_iterations, 1, kMaxVieIterations))),
+      Value::of_number(field_number(L, idx, "vie_dt", fn, st.vie_dt)),
+      Value::of_number(field_number(L, idx, "mixed_switch", fn, st.mixed_switch)),
+      Value::of_word(field_string(L, idx, "mixed_implicit", fn, integrator_name(st.mixed_implicit)))};
+  const Vec3 gravity = has_field(L, idx, "gravity") ? field_vec3(L, idx, "gravity", fn) : s.model.gravity;
+  const int threads = int(whole("threads", st.threads, 1, kMaxThreads));
+  apply_command(L, s, "settings", settings, fn);
+  apply_command(L, s, "gravity", {Value::of_vector(gravity)}, fn);
+  s.solver.settings.threads = threads;
 }
 
 Scene& push_new_scene(lua_State* L) {
@@ -172,16 +166,6 @@ Scene& push_new_scene(lua_State* L) {
   (*slot)->options = g_options;
   if (g_options) (*slot)->solver.settings.threads = int(g_options->threads);
   return **slot;
-}
-
-std::string ids_line(const std::vector<ParticleId>& ps) {
-  std::string out;
-  for (ParticleId p : ps) out += " " + std::to_string(p);
-  return out;
-}
-
-std::string beam_line(const std::vector<ParticleId>& ps, const Section& sec, bool closed) {
-  return std::string("beam ") + (closed ? "1 " : "0 ") + Trace::section(sec) + ids_line(ps);
 }
 
 // The 6-DOF beam's keys of m:beam: dofs (3 or 6), GJ, EIy, EIz (0 or absent:
@@ -197,23 +181,6 @@ int read_beam6_section(lua_State* L, int idx, const char* fn, Section& sec) {
   return int(dofs);
 }
 
-void record_beam6_section(Scene& s, BlockId b, const Section& sec) {
-  if (sec.GJ != 0 || sec.EIy != 0 || sec.EIz != 0)
-    s.record("section6 " + std::to_string(b) + " " + Trace::number(sec.GJ) + " " + Trace::number(sec.EIy) + " " +
-             Trace::number(sec.EIz));
-}
-
-void record_settings(Scene& s) {
-  const SolverSettings& st = s.solver.settings;
-  s.record(std::string("settings dt=") + Trace::number(st.dt) + " damping=" + damping_name(st.damping) +
-           " viscous=" + Trace::number(st.viscous) + " geometric_factor=" + Trace::number(st.geometric_factor) +
-           " mass_factor=" + Trace::number(st.mass_factor) + " integrator=" + integrator_name(st.integrator) +
-           " mass_mode=" + mass_mode_name(st.mass_mode) + " vie_iterations=" + std::to_string(st.vie_iterations) +
-           " vie_dt=" + Trace::number(st.vie_dt) + " mixed_switch=" + Trace::number(st.mixed_switch) +
-           " mixed_implicit=" + integrator_name(st.mixed_implicit));
-  s.record("gravity " + Trace::vec(s.model.gravity));
-}
-
 // --- tendril.* ------------------------------------------------------------------
 
 int l_new_model(lua_State* L) {
@@ -224,10 +191,7 @@ int l_new_model(lua_State* L) {
     check_keys(L, 1, fn, kSettingKeys);
   }
   Scene& s = push_new_scene(L);
-  if (has_options) {
-    apply_settings(L, 1, s, fn);
-    record_settings(s);
-  }
+  if (has_options) apply_settings(L, 1, s, fn);
   return 1;
 }
 
@@ -236,8 +200,7 @@ int l_load(lua_State* L) {
   if (lua_type(L, 1) != LUA_TSTRING) arg_error(fn, 1, "expected a file name");
   std::string path = lua_tostring(L, 1);
   Scene& s = push_new_scene(L);
-  load_model_xml(path, s.model, s.solver.settings);
-  s.record("open " + path);
+  apply_command(L, s, "open", {Value::of_word(path)}, fn);
   return 1;
 }
 
@@ -260,30 +223,20 @@ int l_gc(lua_State* L) {
   return 0;
 }
 
-int l_particle(lua_State* L) {
-  Scene& s = check_scene(L, "particle");
-  JournalScope record(s, "particle", describe_args(L, 2, lua_gettop(L)));
-  Vec3 x = check_vec3(L, 2, "particle");
-  push_particle(L, s, s.model.add_particle(x));
-  s.record("particle " + Trace::vec(x));
-  record.done();
-  return 1;
-}
 
 int l_cable(lua_State* L) {
   const char* fn = "cable";
   Scene& s = check_scene(L, fn);
-  JournalScope record(s, "cable", describe_args(L, 2, lua_gettop(L)));
-  ParticleId a = check_particle(L, 2, s, fn), b = check_particle(L, 3, s, fn);
+  const ParticleId a = check_particle(L, 2, s, fn), b = check_particle(L, 3, s, fn);
   check_table(L, 4, fn);
   check_keys(L, 4, fn, {"EA", "E", "A", "prestress", "line_mass", "rest_length"});
-  Section sec = read_section(L, 4, fn, false);
-  double rest = field_number(L, 4, "rest_length", fn, 0);
+  const Section sec = read_section(L, 4, fn, false);
+  const double rest = field_number(L, 4, "rest_length", fn, 0);
   if (has_field(L, 4, "rest_length") && !(rest > 0)) key_error(fn, "rest_length", "must be > 0");
-  push_block(L, s, s.model.add_cable(a, b, sec, rest));
-  s.record("cable " + std::to_string(a) + " " + std::to_string(b) + " " + Trace::section(sec) + " " + Trace::number(rest));
-  record.done();
-  return 1;
+  command::Args args = {Value::of_id(a), Value::of_id(b)};
+  append_section(args, sec);
+  args.push_back(Value::of_number(rest));
+  return push_result(L, s, apply_command(L, s, "cable", std::move(args), fn, 2));
 }
 
 // The list of {x, y, z} under 'points' of the options at idx.
@@ -341,7 +294,7 @@ std::vector<Vec3> ring_points(lua_State* L, int idx, const char* fn) {
 int l_beam(lua_State* L) {
   const char* fn = "beam";
   Scene& s = check_scene(L, fn);
-  JournalScope record(s, "beam", describe_args(L, 2, lua_gettop(L)));
+  command::Entry entry(s.session, fn, describe_args(L, 2, lua_gettop(L)));
   check_table(L, 2, fn);
   check_keys(L, 2, fn, {"points", "particles", "from", "direction", "segments", "closed", "centre", "normal", "radius", "start",
                         "EA", "EI", "E", "A", "I", "prestress", "line_mass", "dofs", "GJ", "EIy", "EIz"});
@@ -358,189 +311,78 @@ int l_beam(lua_State* L) {
   if (ways != 1)
     throw LuaArgError("beam: give exactly one of 'points', 'particles', 'from' (with 'direction' and 'segments') or "
                       "'centre' (a ring, with 'normal', 'radius' and 'segments')");
-  BlockId b;
-  if (has_field(L, 2, "from")) {
-    if (closed) key_error(fn, "closed", "is not available with 'from'");
-    const ParticleId start = field_particle(L, 2, "from", s, fn);
-    Vec3 dir = field_vec3(L, 2, "direction", fn);
-    if (!has_field(L, 2, "segments")) key_error(fn, "segments", "is required with 'from'");
-    double seg = field_number(L, 2, "segments", fn, 0);
-    if (seg != std::floor(seg) || seg < 1) key_error(fn, "segments", "must be an integer >= 1");
-    b = s.model.add_beam_from(start, dir, int(seg), sec);
-    s.record("beam_from " + std::to_string(start) + " " + Trace::vec(dir) + " " + std::to_string(int(seg)) + " " +
-             Trace::section(sec));
-  } else if (has_field(L, 2, "particles")) {
-    const std::vector<ParticleId> ps = field_particle_list(L, 2, "particles", s, fn);
-    b = s.model.add_beam(ps, sec, closed);
-    s.record(beam_line(ps, sec, closed));
-  } else {
-    std::vector<Vec3> pts = ring ? ring_points(L, 2, fn) : field_points(L, 2, fn);
-    if (pts.size() < (closed ? 3u : 2u)) key_error(fn, "points", closed ? "needs at least 3 points for a ring" : "needs at least 2 points");
-    // Validate before creating particles so a refused beam leaves nothing behind.
-    if (sec.EA <= 0 || sec.EI <= 0) throw LuaArgError("beam: EA and EI must be > 0");
-    std::vector<ParticleId> ps;
-    for (const Vec3& x : pts) ps.push_back(s.model.add_particle(x));
-    try {
-      b = s.model.add_beam(ps, sec, closed);
-    } catch (...) {
-      for (ParticleId p : ps) s.model.delete_particle(p);
-      throw;
+  // One production: its particles, the beam, its 6-DOF section and
+  // formulation, all or nothing.
+  command::Result made;
+  all_or_nothing(s, [&] {
+    if (has_field(L, 2, "from")) {
+      if (closed) key_error(fn, "closed", "is not available with 'from'");
+      const ParticleId start = field_particle(L, 2, "from", s, fn);
+      const Vec3 span = field_vec3(L, 2, "direction", fn);
+      if (!has_field(L, 2, "segments")) key_error(fn, "segments", "is required with 'from'");
+      const double seg = field_number(L, 2, "segments", fn, 0);
+      if (seg != std::floor(seg) || seg < 1) key_error(fn, "segments", "must be an integer >= 1");
+      command::Args args = {Value::of_id(start), Value::of_vector(span), Value::of_id(std::uint64_t(seg))};
+      append_section(args, sec);
+      made = apply_command(L, s, "beam_from", std::move(args), fn);
+    } else {
+      std::vector<ParticleId> ps;
+      if (has_field(L, 2, "particles")) {
+        ps = field_particle_list(L, 2, "particles", s, fn);
+      } else {
+        const std::vector<Vec3> pts = ring ? ring_points(L, 2, fn) : field_points(L, 2, fn);
+        if (pts.size() < (closed ? 3u : 2u))
+          key_error(fn, "points", closed ? "needs at least 3 points for a ring" : "needs at least 2 points");
+        if (sec.EA <= 0 || sec.EI <= 0) throw LuaArgError("beam: EA and EI must be > 0");  // before any particle
+        for (const Vec3& x : pts) ps.push_back(apply_command(L, s, "particle", {Value::of_vector(x)}, fn).ids[0]);
+      }
+      command::Args args = {Value::of_id(closed)};
+      append_section(args, sec);
+      args.push_back(Value::of_ids({ps.begin(), ps.end()}));
+      made = apply_command(L, s, "beam", std::move(args), fn);
     }
-    for (const Vec3& x : pts) s.record("particle " + Trace::vec(x));
-    s.record(beam_line(ps, sec, closed));
-  }
-  record_beam6_section(s, b, sec);
-  if (dofs == 6) {
-    s.model.set_beam_formulation(b, 6);
-    s.record("formulation " + std::to_string(b) + " 6");
-  }
-  push_block(L, s, b);
-  record.done();
-  return 1;
+    const Value beam = Value::of_id(made.ids[0]);
+    if (sec.GJ != 0 || sec.EIy != 0 || sec.EIz != 0)
+      apply_command(L, s, "section6", {beam, Value::of_number(sec.GJ), Value::of_number(sec.EIy), Value::of_number(sec.EIz)}, fn);
+    if (dofs == 6) {
+      command::Args args(command::get("formulation").params.size(), Value::absent());
+      args[0] = beam;
+      args[1] = Value::of_word("6");
+      apply_command(L, s, "formulation", std::move(args), fn);
+    }
+  });
+  entry.done();
+  return push_result(L, s, made);
 }
 
 int l_quad_grid(lua_State* L) {
   const char* fn = "quad_grid";
   Scene& s = check_scene(L, fn);
-  JournalScope record(s, "quad_grid", describe_args(L, 2, lua_gettop(L)));
   check_table(L, 2, fn);
   check_keys(L, 2, fn, {"particles", "rows", "cols", "EA", "E", "A", "prestress", "line_mass"});
-  Section sec = read_section(L, 2, fn, false);
-  const double rows = field_number(L, 2, "rows", fn, 0), cols = field_number(L, 2, "cols", fn, 0);
+  const Section sec = read_section(L, 2, fn, false);
+  auto count = [&](const char* key) {
+    const auto n = whole_number_in(field_number(L, 2, key, fn, 0), 0, 1000000);
+    if (!n) key_error(fn, key, "must be a whole number >= 1");
+    return Value::of_id(std::uint64_t(*n));
+  };
+  command::Args args = {count("rows"), count("cols")};
+  append_section(args, sec);
   const std::vector<ParticleId> ps = field_particle_list(L, 2, "particles", s, fn);
-  push_block(L, s, s.model.add_quad_grid(ps, int(rows), int(cols), sec));
-  s.record("quad_grid " + std::to_string(int(rows)) + " " + std::to_string(int(cols)) + " " + Trace::section(sec) + ids_line(ps));
-  record.done();
-  return 1;
+  args.push_back(Value::of_ids({ps.begin(), ps.end()}));
+  return push_result(L, s, apply_command(L, s, "quad_grid", std::move(args), fn, 2));
 }
 
-int l_delete_particle(lua_State* L) {
-  Scene& s = check_scene(L, "delete_particle");
-  JournalScope record(s, "delete_particle", describe_args(L, 2, lua_gettop(L)));
-  const ParticleId p = check_particle(L, 2, s, "delete_particle");
-  s.model.delete_particle(p);
-  s.record("delete_particle " + std::to_string(p));
-  record.done();
-  return 0;
-}
 
-int l_merge(lua_State* L) {
-  Scene& s = check_scene(L, "merge");
-  JournalScope record(s, "merge", describe_args(L, 2, lua_gettop(L)));
-  const std::vector<ParticleId> ps = check_particle_list(L, 2, s, "merge");
-  push_particle(L, s, s.model.merge(ps));
-  s.record("merge" + ids_line(ps));
-  record.done();
-  return 1;
-}
 
-int l_explode(lua_State* L) {
-  Scene& s = check_scene(L, "explode");
-  JournalScope record(s, "explode", describe_args(L, 2, lua_gettop(L)));
-  const ParticleId p = check_particle(L, 2, s, "explode");
-  std::vector<ParticleId> out = s.model.explode(p);
-  s.record("explode " + std::to_string(p));
-  lua_createtable(L, int(out.size()), 0);
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    push_particle(L, s, out[k]);
-    lua_rawseti(L, -2, lua_Integer(k + 1));
-  }
-  record.done();
-  return 1;
-}
 
-int l_explode_from(lua_State* L) {
-  Scene& s = check_scene(L, "explode_from");
-  JournalScope record(s, "explode_from", describe_args(L, 2, lua_gettop(L)));
-  ParticleId p = check_particle(L, 2, s, "explode_from");
-  BlockId b = check_block(L, 3, s, "explode_from");
-  push_particle(L, s, s.model.explode_from(p, b));
-  s.record("explode_from " + std::to_string(p) + " " + std::to_string(b));
-  record.done();
-  return 1;
-}
 
-int l_delete(lua_State* L) {
-  Scene& s = check_scene(L, "delete");
-  JournalScope record(s, "delete", describe_args(L, 2, lua_gettop(L)));
-  BlockId b = check_block(L, 2, s, "delete");
-  switch (s.model.blocks[b].kind) {
-    case BlockKind::Cable: s.model.delete_cable(b); break;
-    case BlockKind::Beam: s.model.delete_beam(b); break;
-    case BlockKind::Patch: s.model.delete_patch(b); break;  // rule 27
-  }
-  s.record("delete " + std::to_string(b));
-  record.done();
-  return 0;
-}
 
-int l_insert(lua_State* L) {
-  Scene& s = check_scene(L, "insert");
-  JournalScope record(s, "insert", describe_args(L, 2, lua_gettop(L)));
-  ParticleId a = check_particle(L, 2, s, "insert"), b = check_particle(L, 3, s, "insert");
-  push_particle(L, s, s.model.insert_particle(a, b));
-  s.record("insert " + std::to_string(a) + " " + std::to_string(b));
-  record.done();
-  return 1;
-}
 
-// Rule 23: a simple particle of a patch and its quads; the rest may split.
-int l_remove_from_patch(lua_State* L) {
-  Scene& s = check_scene(L, "remove_from_patch");
-  JournalScope record(s, "remove_from_patch", describe_args(L, 2, lua_gettop(L)));
-  const ParticleId p = check_particle(L, 2, s, "remove_from_patch");
-  s.model.remove_from_patch(p);
-  s.record("remove_from_patch " + std::to_string(p));
-  record.done();
-  return 0;
-}
 
-// Rule 26: sews patch b onto patch a along their common boundary edges.
-int l_merge_patches(lua_State* L) {
-  Scene& s = check_scene(L, "merge_patches");
-  JournalScope record(s, "merge_patches", describe_args(L, 2, lua_gettop(L)));
-  const BlockId a = check_block(L, 2, s, "merge_patches"), b = check_block(L, 3, s, "merge_patches");
-  push_block(L, s, s.model.merge_patches(a, b));
-  s.record("merge_patches " + std::to_string(a) + " " + std::to_string(b));
-  record.done();
-  return 1;
-}
 
-int l_remove_from_beam(lua_State* L) {
-  Scene& s = check_scene(L, "remove_from_beam");
-  JournalScope record(s, "remove_from_beam", describe_args(L, 2, lua_gettop(L)));
-  const ParticleId p = check_particle(L, 2, s, "remove_from_beam");
-  s.model.remove_from_beam(p);
-  s.record("remove_from_beam " + std::to_string(p));
-  record.done();
-  return 0;
-}
 
-int l_split(lua_State* L) {
-  Scene& s = check_scene(L, "split");
-  JournalScope record(s, "split", describe_args(L, 2, lua_gettop(L)));
-  const BlockId b = check_block(L, 2, s, "split");
-  const ParticleId p = check_particle(L, 3, s, "split");
-  const auto [q, nb] = s.model.split_beam(b, p);
-  push_particle(L, s, q);
-  push_block(L, s, nb);
-  s.record("split " + std::to_string(b) + " " + std::to_string(p));
-  record.done();
-  return 2;
-}
 
-int l_rest_length(lua_State* L) {
-  Scene& s = check_scene(L, "rest_length");
-  const ParticleId a = check_particle(L, 2, s, "rest_length"), b = check_particle(L, 3, s, "rest_length");
-  if (lua_isnoneornil(L, 4)) {
-    lua_pushnumber(L, s.model.edge_rest_length(a, b));
-    return 1;
-  }
-  const double length = check_number(L, 4, "rest_length");
-  s.model.set_rest_length(a, b, length);
-  s.record("rest_length " + std::to_string(a) + " " + std::to_string(b) + " " + Trace::number(length));
-  return 0;
-}
 
 int l_lock(lua_State* L) {
   Scene& s = check_scene(L, "lock");
@@ -550,8 +392,8 @@ int l_lock(lua_State* L) {
     if (lua_type(L, 3) != LUA_TSTRING) arg_error("lock", 3, "expected axes such as \"xyz\"");
     axes = lua_tostring(L, 3);
   }
-  s.model.set_lock(p, s.model.particles.lock[p] | parse_axes(axes, "lock"));
-  s.record("lock " + std::to_string(p) + " " + std::to_string(int(s.model.particles.lock[p])));
+  const std::uint8_t bits = s.model.particles.lock[p] | parse_axes(axes, "lock");
+  apply_command(L, s, "lock", {Value::of_id(p), Value::of_id(bits)}, "lock");
   return 0;
 }
 
@@ -563,8 +405,7 @@ int l_unlock(lua_State* L) {
     if (lua_type(L, 3) != LUA_TSTRING) arg_error("unlock", 3, "expected axes such as \"xyz\"");
     bits = parse_axes(lua_tostring(L, 3), "unlock");
   }
-  s.model.set_lock(p, s.model.particles.lock[p] & ~bits);
-  s.record("lock " + std::to_string(p) + " " + std::to_string(int(s.model.particles.lock[p])));
+  apply_command(L, s, "lock", {Value::of_id(p), Value::of_id(s.model.particles.lock[p] & ~bits)}, "unlock");
   return 0;
 }
 
@@ -574,36 +415,8 @@ int l_locks(lua_State* L) {
   return 1;
 }
 
-int l_load_force(lua_State* L) {
-  Scene& s = check_scene(L, "load");
-  ParticleId p = check_particle(L, 2, s, "load");
-  const Vec3 f = check_vec3(L, 3, "load");
-  s.model.set_load(p, f);
-  s.record("load " + std::to_string(p) + " " + Trace::vec(f));
-  return 0;
-}
 
-int l_mass(lua_State* L) {
-  Scene& s = check_scene(L, "mass");
-  ParticleId p = check_particle(L, 2, s, "mass");
-  if (lua_isnoneornil(L, 3)) {
-    lua_pushnumber(L, s.model.particles.mass(p));
-    return 1;
-  }
-  const double kg = check_number(L, 3, "mass");
-  s.model.set_point_mass(p, kg);
-  s.record("mass " + std::to_string(p) + " " + Trace::number(kg));
-  return 0;
-}
 
-int l_passive(lua_State* L) {
-  Scene& s = check_scene(L, "passive");
-  ParticleId p = check_particle(L, 2, s, "passive");
-  if (!lua_isboolean(L, 3)) arg_error("passive", 3, "expected true or false");
-  s.model.set_passive(p, lua_toboolean(L, 3));
-  s.record("passive " + std::to_string(p) + (lua_toboolean(L, 3) ? " 1" : " 0"));
-  return 0;
-}
 
 int l_role(lua_State* L) {
   Scene& s = check_scene(L, "role");
@@ -615,19 +428,7 @@ int l_role(lua_State* L) {
   Role r;
   if (lua_type(L, 3) != LUA_TSTRING || !parse_role(lua_tostring(L, 3), r))
     arg_error("role", 3, "expected \"parent\", \"child\", \"volatile\" or \"none\"");
-  s.model.set_role(p, r);
-  s.record("role " + std::to_string(p) + " " + std::to_string(int(r)));
-  return 0;
-}
-
-int l_gravity(lua_State* L) {
-  Scene& s = check_scene(L, "gravity");
-  if (lua_isnoneornil(L, 2)) {
-    push_vec3(L, s.model.gravity);
-    return 1;
-  }
-  s.model.gravity = check_vec3(L, 2, "gravity");
-  s.record("gravity " + Trace::vec(s.model.gravity));
+  apply_command(L, s, "role", {Value::of_id(p), Value::of_id(std::uint64_t(r))}, "role");
   return 0;
 }
 
@@ -638,7 +439,6 @@ int l_settings(lua_State* L) {
     check_table(L, 2, fn);
     check_keys(L, 2, fn, kSettingKeys);
     apply_settings(L, 2, s, fn);
-    record_settings(s);
   }
   const SolverSettings& st = s.solver.settings;
   lua_createtable(L, 0, 8);
@@ -754,14 +554,6 @@ int l_position(lua_State* L) {
   return 1;
 }
 
-int l_set_position(lua_State* L) {
-  Scene& s = check_scene(L, "set_position");
-  ParticleId p = check_particle(L, 2, s, "set_position");
-  const Vec3 x = check_vec3(L, 3, "set_position");
-  s.model.particles.position[p] = x;
-  s.record("position " + std::to_string(p) + " " + Trace::vec(x));
-  return 0;
-}
 
 int l_velocity(lua_State* L) {
   Scene& s = check_scene(L, "velocity");
@@ -896,12 +688,12 @@ int l_formulation(lua_State* L) {
     lua_pushinteger(L, s.model.beam_formulation(b));
     return 1;
   }
-  JournalScope record(s, fn, describe_args(L, 2, lua_gettop(L)));
   const std::int64_t dofs = check_integer(L, 3, fn);
   if (dofs != 3 && dofs != 6) arg_error(fn, 3, "must be 3 or 6 (DOF per particle)");
-  s.model.set_beam_formulation(b, int(dofs));
-  s.record("formulation " + std::to_string(b) + " " + std::to_string(dofs));
-  record.done();
+  command::Args args(command::get("formulation").params.size(), Value::absent());
+  args[0] = Value::of_id(b);
+  args[1] = Value::of_word(std::to_string(dofs));
+  apply_command(L, s, "formulation", std::move(args), fn, 2);
   return 0;
 }
 
@@ -920,29 +712,14 @@ int l_orientation(lua_State* L) {
   for (int k = 0; k < 3; ++k) R.col(k) = check_vec3(L, 3 + k, fn);
   if (!((R.transpose() * R - Mat3::Identity()).cwiseAbs().maxCoeff() < 1e-6) || !(R.determinant() > 0))
     arg_error(fn, 3, "x, y, z must be orthonormal unit vectors forming a right-handed frame");
-  Quat q(R);
-  s.model.set_orientation(p, q);
-  const Quat& set = s.model.particles.orientation[p];
-  s.record("orientation " + std::to_string(p) + " " + Trace::number(set.w()) + " " + Trace::number(set.x()) + " " +
-           Trace::number(set.y()) + " " + Trace::number(set.z()));
+  const Quat q(R);
+  apply_command(L, s, "orientation",
+                {Value::of_id(p), Value::of_number(q.w()), Value::of_number(q.x()), Value::of_number(q.y()),
+                 Value::of_number(q.z())},
+                fn);
   return 0;
 }
 
-// m:torque(p, {tx, ty, tz}) applies an external moment [N m]; m:torque(p)
-// returns the one applied.
-int l_torque(lua_State* L) {
-  const char* fn = "torque";
-  Scene& s = check_scene(L, fn);
-  const ParticleId p = check_particle(L, 2, s, fn);
-  if (lua_isnoneornil(L, 3)) {
-    push_vec3(L, s.model.particles.moment[p]);
-    return 1;
-  }
-  const Vec3 t = check_vec3(L, 3, fn);
-  s.model.set_moment(p, t);
-  s.record("torque " + std::to_string(p) + " " + Trace::vec(t));
-  return 0;
-}
 
 // --- handles -----------------------------------------------------------------------
 
@@ -981,34 +758,18 @@ void register_model_meta(lua_State* L) {
   lua_pushcfunction(L, l_gc);
   lua_setfield(L, -2, "__gc");
   lua_newtable(L);  // methods
-  set_fn<l_particle>(L, "particle");
+  add_command_methods(L);  // first: the methods below take Lua shapes of their own
   set_fn<l_cable>(L, "cable");
   set_fn<l_beam>(L, "beam");
   set_fn<l_quad_grid>(L, "quad_grid");
-  set_fn<l_delete_particle>(L, "delete_particle");
-  set_fn<l_merge>(L, "merge");
-  set_fn<l_explode>(L, "explode");
-  set_fn<l_explode_from>(L, "explode_from");
-  set_fn<l_delete>(L, "delete");
-  set_fn<l_insert>(L, "insert");
-  set_fn<l_remove_from_beam>(L, "remove_from_beam");
-  set_fn<l_remove_from_patch>(L, "remove_from_patch");
-  set_fn<l_merge_patches>(L, "merge_patches");
-  set_fn<l_split>(L, "split");
-  set_fn<l_rest_length>(L, "rest_length");
   set_fn<l_lock>(L, "lock");
   set_fn<l_unlock>(L, "unlock");
   set_fn<l_locks>(L, "locks");
-  set_fn<l_load_force>(L, "load");
-  set_fn<l_mass>(L, "mass");
-  set_fn<l_passive>(L, "passive");
-  set_fn<l_gravity>(L, "gravity");
   set_fn<l_role>(L, "role");
   set_fn<l_settings>(L, "settings");
   set_fn<l_run>(L, "run");
   set_fn<l_step>(L, "step");
   set_fn<l_position>(L, "position");
-  set_fn<l_set_position>(L, "set_position");
   set_fn<l_velocity>(L, "velocity");
   set_fn<l_reaction>(L, "reaction");
   set_fn<l_state>(L, "state");
@@ -1025,7 +786,6 @@ void register_model_meta(lua_State* L) {
   set_fn<l_save_obj>(L, "save_obj");
   set_fn<l_formulation>(L, "formulation");
   set_fn<l_orientation>(L, "orientation");
-  set_fn<l_torque>(L, "torque");
   add_rule_methods(L);
   add_query_methods(L);
   add_goal_methods(L);

@@ -11,6 +11,7 @@
 
 #include "io/trace.hpp"
 #include "lua_args.hpp"
+#include "lua_commands.hpp"
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
 #include "multires.hpp"
@@ -18,6 +19,8 @@
 namespace tendril::lua {
 
 namespace {
+
+using command::Value;
 
 constexpr const char* kMultiresMeta = "tendril.Multires";
 
@@ -41,8 +44,6 @@ MultiresBox& check_box(lua_State* L, int idx, Scene& s, const char* fn) {
   return *box;
 }
 
-std::string section_words(const Section& s) { return Trace::section(s); }
-
 // The visible fields of the handle table at idx.
 void refresh_fields(lua_State* L, int idx, Scene& s, const meshing::MultiresPatch& mr) {
   if (mr.coarse_mode()) push_block(L, s, mr.coarse);
@@ -60,7 +61,7 @@ void refresh_fields(lua_State* L, int idx, Scene& s, const meshing::MultiresPatc
 int l_multires(lua_State* L) {
   const char* fn = "multires";
   Scene& s = check_scene(L, fn);
-  JournalScope record(s, fn, describe_args(L, 2, lua_gettop(L)));
+  command::Entry record(s.session, fn, describe_args(L, 2, lua_gettop(L)));
   const BlockId b = check_block(L, 2, s, fn);
   int factor = 2;
   const Section* fine = nullptr;
@@ -82,14 +83,11 @@ int l_multires(lua_State* L) {
   }
   meshing::MultiresPatch mr = meshing::multires_patch(s.model, b, factor, fine);
   const Model& m = s.model;
-  for (ParticleId p : mr.particles) s.record("particle " + Trace::vec(m.particles.position[p]));
-  std::string line = "patch " + section_words(mr.fine_section);
-  for (const Model::Quad& q : mr.fine_quads)
-    for (ParticleId p : q) line += " " + std::to_string(p);
-  s.record(line);
+  for (ParticleId p : mr.particles) record_command(s, "particle", {Value::of_vector(m.particles.position[p])});
+  record_patch_command(s, mr.fine_section, mr.fine_quads);
   for (ParticleId p : mr.particles) {
-    if (m.particles.lock[p]) s.record("lock " + std::to_string(p) + " " + std::to_string(int(m.particles.lock[p])));
-    s.record("passive " + std::to_string(p) + " 1");
+    if (m.particles.lock[p]) record_command(s, "lock", {Value::of_id(p), Value::of_id(m.particles.lock[p])});
+    record_command(s, "passive", {Value::of_id(p), Value::of_id(1)});
   }
   lua_createtable(L, 0, 6);
   const int table = lua_gettop(L);
@@ -113,15 +111,15 @@ int l_multires(lua_State* L) {
 int l_refine(lua_State* L) {
   const char* fn = "refine";
   Scene& s = check_scene(L, fn);
-  JournalScope record(s, fn, describe_args(L, 2, lua_gettop(L)));
+  command::Entry record(s.session, fn, describe_args(L, 2, lua_gettop(L)));
   MultiresBox& box = check_box(L, 2, s, fn);
   const BlockId coarse = box.mr.coarse;
   meshing::multires_refine(s.model, box.mr);
   const Model& m = s.model;
   for (ParticleId p : box.mr.particles)
-    s.record("position " + std::to_string(p) + " " + Trace::vec(m.particles.position[p]));
-  for (ParticleId p : box.mr.particles) s.record("passive " + std::to_string(p) + " 0");
-  s.record("delete " + std::to_string(coarse));
+    record_command(s, "position", {Value::of_id(p), Value::of_vector(m.particles.position[p])});
+  for (ParticleId p : box.mr.particles) record_command(s, "passive", {Value::of_id(p), Value::of_id(0)});
+  record_command(s, "delete", {Value::of_id(coarse)});
   refresh_fields(L, 2, s, box.mr);
   record.done();
   return 0;
@@ -131,14 +129,11 @@ int l_refine(lua_State* L) {
 int l_coarsen(lua_State* L) {
   const char* fn = "coarsen";
   Scene& s = check_scene(L, fn);
-  JournalScope record(s, fn, describe_args(L, 2, lua_gettop(L)));
+  command::Entry record(s.session, fn, describe_args(L, 2, lua_gettop(L)));
   MultiresBox& box = check_box(L, 2, s, fn);
   meshing::multires_coarsen(s.model, box.mr);
-  std::string line = "patch " + section_words(box.mr.coarse_section);
-  for (const Model::Quad& q : box.mr.coarse_quads)
-    for (ParticleId p : q) line += " " + std::to_string(p);
-  s.record(line);
-  for (ParticleId p : box.mr.particles) s.record("passive " + std::to_string(p) + " 1");
+  record_patch_command(s, box.mr.coarse_section, box.mr.coarse_quads);
+  for (ParticleId p : box.mr.particles) record_command(s, "passive", {Value::of_id(p), Value::of_id(1)});
   refresh_fields(L, 2, s, box.mr);
   record.done();
   return 0;

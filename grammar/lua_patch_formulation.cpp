@@ -15,7 +15,9 @@
 
 #include "edge_classification.hpp"
 #include "io/trace.hpp"
+#include "command/registry.hpp"
 #include "lua_args.hpp"
+#include "lua_commands.hpp"
 #include "lua_rules.hpp"
 
 namespace tendril::lua {
@@ -80,7 +82,6 @@ int patch_formulation(lua_State* L, Scene& s, BlockId b) {
     push_current(L, model.patch_formulation(b));
     return model.patch_formulation(b).cst() ? 2 : 1;
   }
-  JournalScope record(s, kFn, describe_args(L, 2, lua_gettop(L)));
   if (lua_type(L, 3) != LUA_TSTRING) arg_error(kFn, 3, "a patch's formulation is \"bars\" or \"cst\"");
   const std::string kind = lua_tostring(L, 3);
   Membrane mem;
@@ -111,9 +112,16 @@ int patch_formulation(lua_State* L, Scene& s, BlockId b) {
   } else {
     arg_error(kFn, 3, "a patch's formulation is \"bars\" or \"cst\", not \"" + kind + "\"");
   }
-  model.set_patch_formulation(b, mem, triangles);
-  s.record(Trace::patch_formulation(b, mem, triangles));
-  record.done();
+  using command::Value;
+  command::Args args = {Value::of_id(b), Value::of_word(membrane_mode_name(mem.mode))};
+  for (double x : {mem.sigma_warp, mem.sigma_weft, mem.dxx, mem.dxy, mem.dyx, mem.dyy, mem.G})
+    args.push_back(Value::of_number(x));
+  std::vector<std::uint32_t> ids;
+  for (const Model::Triangle& t : triangles) ids.insert(ids.end(), t.begin(), t.end());
+  args.push_back(Value::of_ids(std::move(ids)));
+  const command::Command& c = command::get("formulation");
+  for (std::size_t k = 2; k < args.size(); ++k) args[k].given = c.on_line(args, k);
+  apply_command(L, s, c, std::move(args), kFn, 2);
   return 0;
 }
 

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "lua_args.hpp"
+#include "lua_commands.hpp"
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
 
@@ -42,19 +43,6 @@ int l_neighbours(lua_State* L) {
     lua_rawseti(L, -2, ++n);
   }
   return 1;
-}
-
-// m:extend(beam, end, p): rule 9, the beam grows from its end particle to p.
-int l_extend(lua_State* L) {
-  const char* fn = "extend";
-  Scene& s = check_scene(L, fn);
-  JournalScope record(s, "extend", describe_args(L, 2, lua_gettop(L)));
-  BlockId b = check_block(L, 2, s, fn);
-  ParticleId end = check_particle(L, 3, s, fn), p = check_particle(L, 4, s, fn);
-  s.model.extend_beam(b, end, p);
-  s.record("extend " + std::to_string(b) + " " + std::to_string(end) + " " + std::to_string(p));
-  record.done();
-  return 0;
 }
 
 // m:references(p): one block per reference of p, a block twice where a
@@ -119,10 +107,9 @@ int l_joint(lua_State* L) {
   const double angle = has_field(L, 3, "angle") ? field_number(L, 3, "angle", fn, 0) * M_PI / 180 : current;
   if (!has_field(L, 3, "stiffness")) key_error(fn, "stiffness", "is required [N/m]");
   const double k = field_number(L, 3, "stiffness", fn, 0);
-  const std::size_t id = s.model.add_joint(p, angle, k);
-  s.record("joint " + std::to_string(p) + " " + Trace::number(angle) + " " + Trace::number(k));
-  lua_pushinteger(L, lua_Integer(id + 1));
-  return 1;
+  using command::Value;
+  return push_result(L, s,
+                     apply_command(L, s, "joint", {Value::of_id(p), Value::of_number(angle), Value::of_number(k)}, fn));
 }
 
 // m:joint_angle(j): the joint's current included angle [deg];
@@ -145,8 +132,7 @@ int l_joint_angle(lua_State* L) {
     return 1;
   }
   const double angle = check_number(L, 3, fn) * M_PI / 180;
-  s.model.set_joint_angle(std::size_t(j), angle);
-  s.record("joint_angle " + std::to_string(j) + " " + Trace::number(angle));
+  apply_command(L, s, "joint_angle", {command::Value::of_id(std::uint64_t(j)), command::Value::of_number(angle)}, fn);
   return 0;
 }
 
@@ -154,7 +140,6 @@ int l_joint_angle(lua_State* L) {
 
 void add_query_methods(lua_State* L) {
   set_fn<l_neighbours>(L, "neighbours");
-  set_fn<l_extend>(L, "extend");
   set_fn<l_references>(L, "references");
   set_fn<l_summary>(L, "summary");
   set_fn<l_joint>(L, "joint");

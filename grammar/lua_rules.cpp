@@ -341,22 +341,6 @@ std::string describe_args(lua_State* L, int first, int last) {
   return out;
 }
 
-JournalScope::JournalScope(Scene& s, const char* operation, std::string args)
-    : scene_(s), owner_(s.model.changes == nullptr) {
-  if (!owner_) return;
-  entry_.step = s.solver.steps();
-  entry_.time = s.solver.time();
-  entry_.rule = operation;
-  entry_.args = std::move(args);
-  s.model.changes = &entry_.changes;
-}
-
-JournalScope::~JournalScope() {
-  if (!owner_) return;
-  scene_.model.changes = nullptr;
-  if (done_) scene_.journal.entries.push_back(std::move(entry_));
-}
-
 bool fire_triggers(lua_State* L, Scene& s, bool converged) {
   bool changed = false;
   // A rule or predicate may register triggers (m:trigger) while these fire:

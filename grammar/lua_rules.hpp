@@ -20,22 +20,6 @@ void add_rule_methods(lua_State* L);
 // A readable list of the Lua values at [first, last], for the journal.
 std::string describe_args(lua_State* L, int first, int last);
 
-// Journals one primitive called directly by a scene. Inside a rule
-// application it does nothing: the rule's own entry collects the changes.
-class JournalScope {
- public:
-  JournalScope(Scene& s, const char* operation, std::string args);
-  ~JournalScope();
-  void done() { done_ = true; }
-
- private:
-  Scene& scene_;
-  bool owner_;
-  bool done_ = false;
-  ChangeSet changes_;
-  JournalEntry entry_;
-};
-
 // Runs the scene's triggers after a solver step; returns true when a rule
 // changed the model. The model userdata must be at stack index 1.
 bool fire_triggers(lua_State* L, Scene& s, bool converged);

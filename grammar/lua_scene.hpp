@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "lua_host.hpp"
+#include "command/session.hpp"
 #include "io/trace.hpp"
 #include "model/journal.hpp"
 #include "model/model.hpp"
@@ -26,10 +27,11 @@ struct Scene {
   Solver solver{model};
   Journal journal;
   Trace trace;  // the replayable record of every change (io/trace.hpp)
+  // Every change goes through it (command/session.hpp): checked, applied, recorded.
+  command::Session session{model, solver, &trace, &journal};
   // Rebuilt when the solver stepped or the trace grew since the last query.
   NeighbourIndex neighbours;
   std::pair<std::uint64_t, std::size_t> neighbours_built_at{~0ull, 0};
-  void record(const std::string& line) { trace.record(solver, line); }
   std::vector<Trigger*> triggers;  // owned by lua_rules.cpp, freed with the scene
   const SceneOptions* options = nullptr;
   ~Scene();

@@ -9,6 +9,8 @@
 #include <stdexcept>
 
 #include "fields.hpp"
+#include "command/json_form.hpp"
+#include "command/session.hpp"
 #include "lua_bridge.hpp"
 
 namespace tendril::studio {
@@ -64,6 +66,8 @@ const std::vector<Session::CommandSpec>& Session::commands() {
       {"save", &Session::cmd_save, false},
       {"timeline", &Session::cmd_timeline, false},
       {"branch", &Session::cmd_branch, true},
+      {"apply", &Session::cmd_apply, true},
+      {"commands", &Session::cmd_commands, false},
   };
   return all;
 }
@@ -478,6 +482,21 @@ json Session::cmd_release(lua_State* L, const json&) {
 json Session::cmd_lock(lua_State* L, const json& c) {
   return from(call_method(L, model_ref_, "lock", json::array({particle_arg(c), c.value("axes", "xyz")})));
 }
+
+// Any command of docs/commands.md in its JSON form, checked and journaled
+// by the command layer like a scene's call. Not `open` (a page names no
+// file on the server) nor `steps` (the step command paces the solver).
+json Session::cmd_apply(lua_State* L, const json& c) {
+  const auto [declared, args] =
+      command::from_json({{"command", c.value("command", json())}, {"args", c.value("args", json::object())}});
+  const std::string name = declared->name;
+  if (name == "open" || name == "steps") return refused("apply: '" + name + "' is not for the page (use step, or --out files)");
+  const command::Result r = command::apply(scene_of(L, model_ref_).session, *declared, args);
+  converged_ = false;
+  return ok(command::result_json(r));
+}
+
+json Session::cmd_commands(lua_State*, const json&) { return ok(command::declarations_json()); }
 
 json Session::cmd_unlock(lua_State* L, const json& c) {
   return from(call_method(L, model_ref_, "unlock", json::array({particle_arg(c), c.value("axes", "xyz")})));

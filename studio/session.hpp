@@ -112,6 +112,8 @@ class Session {
   json cmd_save(lua_State*, const json&);
   json cmd_timeline(lua_State*, const json&);
   json cmd_branch(lua_State*, const json&);
+  json cmd_apply(lua_State*, const json&);
+  json cmd_commands(lua_State*, const json&);
 
   SessionOptions options_;
   Outbox& out_;

@@ -12,6 +12,7 @@
 #include "frames.hpp"
 #include "io/input_file.hpp"
 #include "io/model_xml.hpp"
+#include "command/replay.hpp"
 #include "io/trace.hpp"
 #include "timeline.hpp"
 

@@ -1,5 +1,7 @@
 #include "timeline.hpp"
 
+#include "command/replay.hpp"
+
 #include <memory>
 #include <sstream>
 

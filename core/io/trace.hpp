@@ -14,6 +14,8 @@
 //   formulation B bars | form SW SF A B C ... | analysis SW SF DXX DXY DYX DYY G A B C ...
 //     (a patch: bars, or CST triangles A B C with A-B along the warp)
 //   torque P X Y Z   steps N   open PATH (a model database)   # comment
+// Each line is a command of command/ (docs/commands.md lists their forms);
+// command/replay.hpp replays a trace.
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -46,16 +48,10 @@ class Trace {
 
   static std::string number(double x);  // exact: "%a"
   static std::string vec(const Vec3& v);
-  static std::string section(const Section& s);
-  // The line that switches patch b (Model::set_patch_formulation).
-  static std::string patch_formulation(BlockId b, const Membrane& m, const std::vector<Model::Triangle>& triangles);
 
  private:
   std::vector<std::string> lines_;
   std::uint64_t traced_steps_ = 0;
 };
-
-// Runs a trace on an empty model. Throws ModelError naming the line at fault.
-void replay_trace(std::istream& in, const std::string& name, Model& m, Solver& s);
 
 }  // namespace tendril

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "command/replay.hpp"
 #include "io/trace.hpp"
 
 using namespace tendril;

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "command/replay.hpp"
 #include "io/model_xml.hpp"
 #include "io/trace.hpp"
 #include "lua_host.hpp"

@@ -5,6 +5,8 @@
 
 #include <sstream>
 
+#include "command/replay.hpp"
+
 #include "scene_files.hpp"
 
 using namespace tendril;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/model_xml.hpp"
+#include "command/replay.hpp"
 #include "io/trace.hpp"
 #include "physics/solver.hpp"
 

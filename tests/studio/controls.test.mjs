@@ -54,12 +54,24 @@ await run('controls', scene('tests/studio/states.lua'), ['--speed', '0'], async 
   const bad = await reply(page, { cmd: 'settings', settings: { integrator: 'euler' } });
   check(!bad.ok, `an unknown integrator is refused: ${bad.message}`);
 
+  // any command of docs/commands.md, in its JSON form
+  const declared = await reply(page, { cmd: 'commands' });
+  check(declared.ok && declared.value.some((c) => c.name === 'load' && c.params.length === 2), `${declared.value.length} commands declared`);
+  const loaded = await reply(page, { cmd: 'apply', command: 'load', args: { particle: free, force: [0, 0, -0.5] } });
+  check(loaded.ok, `apply: a load on particle ${free}`);
+  const badBits = await reply(page, { cmd: 'apply', command: 'lock', args: { particle: free, bits: 64 } });
+  check(!badBits.ok && badBits.message === "lock: 'bits' must be a whole number from 0 to 63", `apply: a bad argument is refused: ${badBits.message}`);
+  const opened = await reply(page, { cmd: 'apply', command: 'open', args: { path: '/etc/hostname' } });
+  check(!opened.ok && /not for the page/.test(opened.message), `apply: open is refused: ${opened.message}`);
+
   // save from the page
   await until(page, () => studio.status.converged);
   await page.click('#save');
   await until(page, () => studio.replies.some((r) => r.cmd === 'save' && r.ok));
   const saved = ['model.xml', 'model.obj', 'journal.txt'].filter((f) => fs.existsSync(path.join(studio.out, f)));
   check(saved.length === 3, `*save* wrote ${saved.join(', ')} into --out`);
+  const journal = fs.readFileSync(path.join(studio.out, 'journal.txt'), 'utf8');
+  check(journal.includes(`\nload ${free} 0x0p+0 0x0p+0 -0x1p-1\n`), 'the load applied from the page is in the saved journal');
 
   // back to the first equilibrium
   const snaps = await page.evaluate(() => studio.status.snapshots);

@@ -1,0 +1,76 @@
+// Goals of the constraint-based solvers (thesis 3.3.5): anchors, planes,
+// lines and lengths with a weight.
+#include <utility>
+
+#include "command/declare.hpp"
+
+namespace tendril::command {
+
+namespace {
+
+// goal KIND I (J LENGTH | POINT [DIRECTION]) WEIGHT
+enum GoalParam { kKind, kI, kJ, kLength, kPoint, kDirection, kWeight };
+
+bool goal_on_line(const Args& a, std::size_t next) {
+  const std::string& kind = a[kKind].word;
+  if (next == kJ || next == kLength) return kind == "length";
+  if (next == kPoint) return kind != "length";
+  if (next == kDirection) return kind == "plane" || kind == "line";
+  return true;
+}
+
+Result add_goal(Target& t, Args& a) {
+  Goal g;
+  parse_goal_kind(a[kKind].word, g.kind);
+  g.i = particle(a, kI);
+  if (g.kind == Goal::Length) {
+    if (!a[kJ].given) throw ArgumentError(kJ, "is required for a length goal");
+    if (!a[kLength].given) throw ArgumentError(kLength, "is required for a length goal");
+    g.j = particle(a, kJ);
+    g.length = a[kLength].number;
+  } else {
+    if (!a[kPoint].given) throw ArgumentError(kPoint, "is required");
+    g.point = a[kPoint].vector;
+    if (g.kind != Goal::Anchor) {
+      if (!a[kDirection].given) throw ArgumentError(kDirection, "is required for a plane or a line");
+      g.direction = a[kDirection].vector;
+    }
+  }
+  g.weight = a[kWeight].number;
+  Result r;
+  r.kind = Returns::Goal;
+  r.index = t.model.add_goal(g);
+  // The journal records what was given for this kind only.
+  for (std::size_t k = kJ; k < kWeight; ++k) a[k].given = goal_on_line(a, k);
+  return r;
+}
+
+}  // namespace
+
+void declare_goals(std::vector<Command>& out) {
+  out.push_back({"goal", "a goal of the constraint solvers: anchor, plane, line or length, with a weight",
+                 Effect::Setting,
+                 {{"kind", Type::Word, "what the goal holds", {}, {"anchor", "plane", "line", "length"}},
+                  {"particle", Type::Particle, "the particle (length: the first)"},
+                  {"other", Type::Particle, "length: the second particle", {}, {}, true},
+                  {"length", Type::Number, "length: the distance [m]", {0, kInf}, {}, true},
+                  {"point", Type::Vector, "anchor, plane, line: the point [m]", {}, {}, true},
+                  {"direction", Type::Vector, "plane: its normal; line: its direction", {}, {}, true},
+                  {"weight", Type::Number, "the stiffness of the goal [N/m]", {0, kInf, true}}},
+                 Returns::Goal, add_goal, 0, Returns::Nothing, nullptr, false, goal_on_line});
+  out.push_back({"goal_weight", "sets a goal's weight", Effect::Setting,
+                 {{"goal", Type::Goal, "a goal"}, {"weight", Type::Number, "[N/m]", {0, kInf, true}}}, Returns::Nothing,
+                 [](Target& t, Args& a) {
+                   t.model.set_goal_weight(std::size_t(a[0].id), a[1].number);
+                   return nothing();
+                 },
+                 1, Returns::Number,
+                 [](Target& t, const Args& a) { return number_result(std::as_const(t.model.goals)[a[0].id].weight); }});
+  out.push_back({"remove_goal", "removes a goal; later goals move down by one", Effect::Setting,
+                 {{"goal", Type::Goal, "a goal"}}, Returns::Nothing, [](Target& t, Args& a) {
+                   t.model.remove_goal(std::size_t(a[0].id));
+                   return nothing();
+                 }});
+}
+
+}  // namespace tendril::command

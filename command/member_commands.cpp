@@ -1,0 +1,139 @@
+// Settings of beams, patches and joints: sections, formulations (thesis
+// 5.5.2), node frames, moments, rest lengths and rotational joints (6.5.2).
+#include <cmath>
+
+#include "command/declare.hpp"
+
+namespace tendril::command {
+
+namespace {
+
+// formulation B 3|6, or B bars | form SW SF TRIS | analysis SW SF DXX DXY DYX DYY G TRIS.
+enum FormulationParam { kBlock, kKind, kSigmaWarp, kSigmaWeft, kDxx, kDxy, kDyx, kDyy, kG, kTriangles };
+
+bool formulation_on_line(const Args& a, std::size_t next) {
+  const std::string& kind = a[kKind].word;
+  if (kind == "3" || kind == "6") return false;  // a beam: nothing after the kind
+  if (next == kTriangles) return true;
+  if (next <= kSigmaWeft) return kind != "bars";
+  return kind == "analysis";
+}
+
+Result apply_formulation(Target& t, Args& a) {
+  Model& m = t.model;
+  const BlockId b = block(a, kBlock);
+  const std::string& kind = a[kKind].word;
+  const bool patch = m.blocks[b].kind == BlockKind::Patch;
+  if ((kind == "3" || kind == "6") == patch)
+    throw ArgumentError(kKind, patch ? "a patch is \"bars\", \"form\" or \"analysis\"" : "a beam is 3 or 6 (DOF per particle)");
+  if (!patch) {
+    m.set_beam_formulation(b, kind == "3" ? 3 : 6);
+    return nothing();
+  }
+  Membrane mem;
+  mem.mode = kind == "bars" ? Membrane::Bars : kind == "form" ? Membrane::FormFinding : Membrane::Analysis;
+  if (mem.cst()) {
+    mem.sigma_warp = a[kSigmaWarp].number;
+    mem.sigma_weft = a[kSigmaWeft].number;
+  }
+  if (mem.mode == Membrane::Analysis) {
+    mem.dxx = a[kDxx].number;
+    mem.dxy = a[kDxy].number;
+    mem.dyx = a[kDyx].number;
+    mem.dyy = a[kDyy].number;
+    mem.G = a[kG].number;
+  }
+  const std::vector<std::uint32_t>& ids = a[kTriangles].ids;
+  if (ids.size() % 3) throw ArgumentError(kTriangles, "needs three particles per triangle");
+  std::vector<Model::Triangle> tris;
+  for (std::size_t k = 0; k < ids.size(); k += 3) tris.push_back({ids[k], ids[k + 1], ids[k + 2]});
+  m.set_patch_formulation(b, mem, tris);
+  return nothing();
+}
+
+}  // namespace
+
+void declare_members(std::vector<Command>& out) {
+  out.push_back({"section6", "a beam's 6-DOF stiffnesses, set while it is still 3 DOF (0: EI)", Effect::Setting,
+                 {{"beam", Type::Block, "a 3-DOF beam"},
+                  {"GJ", Type::Number, "torsional stiffness [N m^2]", {0, kInf}},
+                  {"EIy", Type::Number, "bending about the section's y axis [N m^2]", {0, kInf}},
+                  {"EIz", Type::Number, "bending about the section's z axis [N m^2]", {0, kInf}}},
+                 Returns::Nothing, [](Target& t, Args& a) {
+                   Model& m = t.model;
+                   const BlockId b = block(a, 0);
+                   if (m.blocks[b].kind != BlockKind::Beam) throw ArgumentError(0, "is not a beam");
+                   if (m.blocks[b].dofs != 3) throw ArgumentError(0, "is already 6 DOF");
+                   Section sec = m.blocks[b].section;
+                   sec.GJ = a[1].number;
+                   sec.EIy = a[2].number;
+                   sec.EIz = a[3].number;
+                   m.blocks[b].section = sec;
+                   return nothing();
+                 }});
+  out.back().lua = "";  // m:beam{GJ =, EIy =, EIz =}
+  out.push_back({"formulation",
+                 "switches a beam between 3 and 6 DOF, or a patch between bars and CST membranes (thesis 5.5.2)",
+                 Effect::Topology,
+                 {{"block", Type::Block, "a beam or a patch"},
+                  {"kind", Type::Word, "beam: 3 or 6; patch: bars, form (form-finding) or analysis", {}, {"3", "6", "bars", "form", "analysis"}},
+                  {"sigma_warp", Type::Number, "prescribed (form) or carried (analysis) warp stress [N/m]", {}, {}, true},
+                  {"sigma_weft", Type::Number, "weft stress [N/m]", {}, {}, true},
+                  {"dxx", Type::Number, "analysis stiffness [N/m]", {}, {}, true},
+                  {"dxy", Type::Number, "analysis stiffness [N/m]", {}, {}, true},
+                  {"dyx", Type::Number, "analysis stiffness [N/m]", {}, {}, true},
+                  {"dyy", Type::Number, "analysis stiffness [N/m]", {}, {}, true},
+                  {"G", Type::Number, "analysis shear stiffness [N/m]", {}, {}, true},
+                  {"triangles", Type::Particles, "CST triangles, three particles each, the first side along the warp", {}, {}, true}},
+                 Returns::Nothing, apply_formulation, 0, Returns::Nothing, nullptr, false, formulation_on_line});
+  out.push_back({"orientation", "sets a particle's node frame (a rotation quaternion; normalised)", Effect::Setting,
+                 {{"particle", Type::Particle, "a particle"},
+                  {"w", Type::Number, "quaternion w"},
+                  {"x", Type::Number, "quaternion x"},
+                  {"y", Type::Number, "quaternion y"},
+                  {"z", Type::Number, "quaternion z"}},
+                 Returns::Nothing, [](Target& t, Args& a) {
+                   // Recorded as given: replay normalises the same numbers the
+                   // same way (a normalised copy would normalise again to other bits).
+                   t.model.set_orientation(particle(a, 0), Quat(a[1].number, a[2].number, a[3].number, a[4].number));
+                   return nothing();
+                 }});
+  out.push_back({"torque", "an external moment on a particle [N m] (6-DOF beams)", Effect::Setting,
+                 {{"particle", Type::Particle, "a particle"}, {"moment", Type::Vector, "the moment [N m]"}},
+                 Returns::Nothing,
+                 [](Target& t, Args& a) {
+                   t.model.set_moment(particle(a, 0), a[1].vector);
+                   return nothing();
+                 },
+                 1, Returns::Vector,
+                 [](Target& t, const Args& a) { return vector_result(t.model.particles.moment[particle(a, 0)]); }});
+  out.push_back({"rest_length", "the rest length of the beam (else cable) edge between consecutive particles",
+                 Effect::Setting,
+                 {{"a", Type::Particle, "one particle"}, {"b", Type::Particle, "its neighbour"},
+                  {"length", Type::Number, "rest length [m]", {0, kInf, true}}},
+                 Returns::Nothing,
+                 [](Target& t, Args& a) {
+                   t.model.set_rest_length(particle(a, 0), particle(a, 1), a[2].number);
+                   return nothing();
+                 },
+                 2, Returns::Number,
+                 [](Target& t, const Args& a) { return number_result(t.model.edge_rest_length(particle(a, 0), particle(a, 1))); }});
+  out.push_back({"joint", "a rotational joint where exactly two beams cross (thesis 6.5.2)", Effect::Setting,
+                 {{"particle", Type::Particle, "the crossing"},
+                  {"angle", Type::Number, "the target included angle [rad]"},
+                  {"stiffness", Type::Number, "[N/m]", {0, kInf}}},
+                 Returns::Joint, [](Target& t, Args& a) {
+                   Result r;
+                   r.kind = Returns::Joint;
+                   r.index = t.model.add_joint(particle(a, 0), a[1].number, a[2].number);
+                   return r;
+                 }});
+  out.push_back({"joint_angle", "sets a joint's target angle (a value per step, as a sensor sends it)", Effect::Setting,
+                 {{"joint", Type::Joint, "a joint"}, {"angle", Type::Number, "the target included angle [rad]"}},
+                 Returns::Nothing, [](Target& t, Args& a) {
+                   t.model.set_joint_angle(std::size_t(a[0].id), a[1].number);
+                   return nothing();
+                 }});
+}
+
+}  // namespace tendril::command

@@ -1,0 +1,224 @@
+// The command layer (command/): one declaration per operation gives the
+// checks, the journal line, its replay and the JSON form. Every registered
+// command is applied here through the registry from C++, replayed bit for
+// bit, and refused with its name and the argument at fault when an
+// argument is wrong, without changing the model or the journal.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include "command/check.hpp"
+#include "command/journal_line.hpp"
+#include "command/json_form.hpp"
+#include "command/replay.hpp"
+#include "every_command.hpp"
+
+using namespace tendril;
+using namespace tendril::test;
+
+namespace {
+
+std::filesystem::path scratch(const char* name) {
+  const auto dir = std::filesystem::temp_directory_path() / "tendril-test-command";
+  std::filesystem::create_directories(dir);
+  return dir / name;
+}
+
+std::string replayed_xml(const std::string& journal) {
+  Model m;
+  Solver s(m);
+  std::istringstream in(journal);
+  replay_trace(in, "journal", m, s);
+  return model_xml_string(m, s.settings);
+}
+
+}  // namespace
+
+TEST_CASE("every registered command is applied, journaled and replayed bit for bit") {
+  Recorded r;
+  apply_every_command(r, scratch("every-base.xml"));
+  for (const command::Command& c : command::commands()) {
+    CAPTURE(std::string(c.name));
+    CHECK(r.used.count(c.name) == 1);  // a new command needs a line in apply_every_command
+  }
+  CHECK(r.model.check() == "");
+  CHECK(r.solver.steps() == 5);
+  const std::string journal = "\n" + r.journal_text();
+  for (const command::Command& c : command::commands()) {
+    if (c.effect == command::Effect::Steps) continue;
+    CAPTURE(std::string(c.name));
+    CHECK(journal.find("\n" + std::string(c.name) + " ") != std::string::npos);
+  }
+  CHECK(replayed_xml(journal) == r.xml());
+  // The productions are the journal's entries (the assembly sequence).
+  CHECK(r.journal.entries.size() >= 20);
+  CHECK(r.journal.entries.front().rule == "open");
+}
+
+TEST_CASE("a journal line, its JSON form and back are the same line") {
+  Recorded r;
+  apply_every_command(r, scratch("json-base.xml"));
+  int lines = 0;
+  for (const std::string& line : r.trace.lines(r.solver)) {
+    CAPTURE(line);
+    std::istringstream words(line);
+    std::string name;
+    words >> name;
+    const command::Command& c = command::get(name);
+    const command::Args decoded = command::decode(c, words);
+    const nlohmann::json message = command::to_json(c, decoded);
+    const auto [back, args] = command::from_json(nlohmann::json::parse(message.dump()));
+    CHECK(back == &c);
+    CHECK(command::encode(c, args) == line);
+    ++lines;
+  }
+  CHECK(lines > 60);
+}
+
+TEST_CASE("a refused argument names the command and the argument, and changes nothing") {
+  Recorded r;
+  apply_every_command(r, scratch("refused-base.xml"));
+  const std::string before = r.xml(), journal = r.journal_text();
+  const std::size_t entries = r.journal.entries.size();
+  struct Case {
+    const char* name;
+    Args args;
+    const char* message;
+  };
+  const std::uint32_t live = r.model.particles_of(r.model.live_blocks().front())[0];
+  const Case cases[] = {
+      {"particle", {vec(0, NAN, 0)}, "particle: 'x' must be a finite number"},
+      {"particle", {}, "particle: takes 1 arguments, got 0"},
+      {"delete_particle", {id(100000)}, "delete_particle: 'particle' particle 100000 does not exist"},
+      {"merge", {ids({live, 99999})}, "merge: 'particles' particle 99999 does not exist"},
+      {"lock", {id(live), id(64)}, "lock: 'bits' must be a whole number from 0 to 63"},
+      {"role", {id(live), id(4)}, "role: 'role' must be a whole number from 0 to 3"},
+      {"passive", {id(live), id(2)}, "passive: 'passive' must be 0 or 1"},
+      {"mass", {id(live), num(-1)}, "mass: 'kg' must be >= 0"},
+      {"position", {id(live), vec(0, 0, 2e12)}, "position: 'x' must be from -1e+12 to 1e+12"},
+      {"section6", {id(0), num(-1), num(0), num(0)}, "section6: 'GJ' must be >= 0"},
+      {"delete", {id(4000)}, "delete: 'block' block 4000 does not exist"},
+      {"goal_weight", {id(77), num(1)}, "goal_weight: 'goal' goal 77 does not exist"},
+      {"joint_angle", {id(9), num(1)}, "joint_angle: 'joint' joint 9 does not exist"},
+      {"goal", {word("circle"), id(live), none(), none(), vec(0, 0, 0), none(), num(1)},
+       "goal: 'kind' must be one of \"anchor\", \"plane\", \"line\", \"length\", got \"circle\""},
+      {"goal", {word("plane"), id(live), none(), none(), vec(0, 0, 0), none(), num(1)},
+       "goal: 'direction' is required for a plane or a line"},
+      {"settings", {num(-1), none(), none(), none(), none(), none(), none(), none(), none(), none(), none()},
+       "settings: 'dt' must be a finite number > 0"},
+      {"settings", {none(), none(), none(), none(), none(), word("euler"), none(), none(), none(), none(), none()},
+       "settings: 'integrator' must be one of \"leapfrog\", \"symplectic_euler\", \"velocity_verlet\", \"midpoint\", "
+       "\"rk4\", \"vie\", \"projective\", \"mixed\", got \"euler\""},
+      {"steps", {id(std::uint64_t(1) << 60)}, "steps: 'n' must be a whole number from 0 to 9.0072e+15"},
+      {"formulation", {id(0), word("7"), none(), none(), none(), none(), none(), none(), none(), none()},
+       "formulation: 'kind' must be one of \"3\", \"6\", \"bars\", \"form\", \"analysis\", got \"7\""},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(std::string(c.name));
+    std::string message;
+    try {
+      command::apply(r.session, c.name, c.args);
+    } catch (const command::CommandError& e) {
+      message = e.what();
+    }
+    CHECK(message == c.message);
+  }
+  CHECK(r.xml() == before);
+  CHECK(r.journal_text() == journal);
+  CHECK(r.journal.entries.size() == entries);
+}
+
+TEST_CASE("a journal whose value the API refuses is refused by replay, naming the line") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"particle 0x0p+0 nan 0x0p+0\n", "j:1: particle: 'x' must be a finite number"},
+      {"settings dt=-0x1p+0\n", "j:1: settings: 'dt' must be a finite number > 0"},
+      {"particle 0x0p+0 0x0p+0 0x0p+0\nlock 0 64\n", "j:2: lock: 'bits' must be a whole number from 0 to 63"},
+      {"particle 0x0p+0 0x0p+0 0x0p+0\nlock 0\n", "j:2: lock: 'bits' is missing: the line ends too early"},
+      {"particle 0x0p+0 0x0p+0 0x0p+0 7\n", "j:1: particle: unexpected '7' at the end of the line"},
+      {"steps 1e300\n", "j:1: steps: 'n' '1e300' is not a whole number"},
+      {"fly 1\n", "j:1: unknown operation 'fly'"},
+  };
+  for (const auto& [journal, message] : cases) {
+    CAPTURE(journal);
+    Model m;
+    Solver s(m);
+    std::istringstream in(journal);
+    CHECK_THROWS_WITH_AS(replay_trace(in, "j", m, s), message, ModelError);
+  }
+}
+
+// Random commands with random arguments, valid and not: every refused call
+// changes nothing, and the journal of the accepted ones replays bit for bit.
+TEST_CASE("random commands through the registry replay bit for bit") {
+  for (std::uint32_t seed : {1u, 2u, 3u}) {
+    CAPTURE(seed);
+    Recorded r;
+    apply_every_command(r, scratch("random-base.xml"));
+    std::mt19937 random(seed);
+    auto pick = [&](std::size_t n) { return std::size_t(std::uniform_int_distribution<std::size_t>(0, n - 1)(random)); };
+    auto chance = [&](double p) { return std::uniform_real_distribution<double>(0, 1)(random) < p; };
+    auto real = [&] { return std::uniform_real_distribution<double>(-2, 2)(random); };
+    std::vector<const command::Command*> pool;
+    for (const command::Command& c : command::commands())
+      if (std::string(c.name) != "open" && std::string(c.name) != "steps") pool.push_back(&c);
+    int refused = 0, applied = 0;
+    for (int call = 0; call < 400; ++call) {
+      const command::Command& c = *pool[pick(pool.size())];
+      std::vector<ParticleId> particles;
+      for (ParticleId p = 0; p < r.model.particles.capacity(); ++p)
+        if (r.model.particles.valid(p)) particles.push_back(p);
+      const std::vector<BlockId> blocks = r.model.live_blocks();
+      Args args;
+      for (const command::Param& p : c.params) {
+        if (p.optional && chance(0.5)) {
+          args.push_back(none());
+          continue;
+        }
+        const bool wrong = chance(0.05);
+        switch (p.type) {
+          case command::Type::Particle:
+            args.push_back(id(wrong || particles.empty() ? 1000000 : particles[pick(particles.size())]));
+            break;
+          case command::Type::Block: args.push_back(id(wrong || blocks.empty() ? 1000000 : blocks[pick(blocks.size())])); break;
+          case command::Type::Goal: args.push_back(id(pick(r.model.goals.size() + 1))); break;
+          case command::Type::Joint: args.push_back(id(pick(r.model.joints.size() + 1))); break;
+          case command::Type::Count: args.push_back(id(wrong ? 1000 : pick(6))); break;
+          case command::Type::Flag: args.push_back(id(wrong ? 2 : pick(2))); break;
+          case command::Type::Number: args.push_back(num(wrong ? NAN : real() + (p.range.min >= 0 ? 2 : 0))); break;
+          case command::Type::Vector: args.push_back(vec(real(), real(), wrong ? INFINITY : real())); break;
+          case command::Type::Word:
+            args.push_back(Value::of_word(wrong || p.choices.empty() ? "nonsense" : p.choices[pick(p.choices.size())]));
+            break;
+          case command::Type::Particles: {
+            std::vector<std::uint32_t> list;
+            for (std::size_t k = 0, n = 1 + pick(4); k < n && !particles.empty(); ++k) list.push_back(particles[pick(particles.size())]);
+            args.push_back(ids(list));
+            break;
+          }
+          case command::Type::Path: args.push_back(word("x")); break;
+        }
+      }
+      const std::string before = r.xml();
+      const std::size_t lines = r.trace.size();
+      try {
+        command::apply(r.session, c, args);
+        ++applied;
+      } catch (const command::CommandError& e) {
+        ++refused;
+        CHECK(std::string(e.what()).rfind(std::string(c.name) + ":", 0) == 0);
+        CHECK(r.xml() == before);
+        CHECK(r.trace.size() == lines);
+      } catch (const ModelError& e) {
+        ++refused;
+        CAPTURE(e.what());
+        CHECK(r.xml() == before);
+        CHECK(r.trace.size() == lines);
+      }
+    }
+    CHECK(applied > 50);
+    CHECK(refused > 50);
+    CHECK(replayed_xml(r.journal_text()) == r.xml());
+  }
+}
