@@ -22,6 +22,7 @@
 #include "lua_patch_formulation.hpp"
 #include "lua_goals.hpp"
 #include "lua_query.hpp"
+#include "lua_readouts.hpp"
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
 #include "model/model.hpp"
@@ -123,7 +124,6 @@ std::string axes_string(std::uint8_t bits) {
   return s;
 }
 
-
 const std::initializer_list<const char*> kSettingKeys = {
     "dt",       "damping",   "viscous",        "geometric_factor", "mass_factor", "gravity",
     "integrator", "mass_mode", "vie_iterations", "vie_dt",           "mixed_switch",
@@ -222,7 +222,6 @@ int l_gc(lua_State* L) {
   *slot = nullptr;
   return 0;
 }
-
 
 int l_cable(lua_State* L) {
   const char* fn = "cable";
@@ -373,17 +372,6 @@ int l_quad_grid(lua_State* L) {
   return push_result(L, s, apply_command(L, s, "quad_grid", std::move(args), fn, 2));
 }
 
-
-
-
-
-
-
-
-
-
-
-
 int l_lock(lua_State* L) {
   Scene& s = check_scene(L, "lock");
   ParticleId p = check_particle(L, 2, s, "lock");
@@ -415,9 +403,6 @@ int l_locks(lua_State* L) {
   return 1;
 }
 
-
-
-
 int l_role(lua_State* L) {
   Scene& s = check_scene(L, "role");
   ParticleId p = check_particle(L, 2, s, "role");
@@ -441,31 +426,23 @@ int l_settings(lua_State* L) {
     apply_settings(L, 2, s, fn);
   }
   const SolverSettings& st = s.solver.settings;
-  lua_createtable(L, 0, 8);
-  lua_pushnumber(L, st.dt);
-  lua_setfield(L, -2, "dt");
-  lua_pushstring(L, damping_name(st.damping));
-  lua_setfield(L, -2, "damping");
-  lua_pushnumber(L, st.viscous);
-  lua_setfield(L, -2, "viscous");
-  lua_pushnumber(L, st.geometric_factor);
-  lua_setfield(L, -2, "geometric_factor");
-  lua_pushnumber(L, st.mass_factor);
-  lua_setfield(L, -2, "mass_factor");
+  lua_createtable(L, 0, 14);
+  auto number = [&](const char* key, double x) { lua_pushnumber(L, x), lua_setfield(L, -2, key); };
+  auto word = [&](const char* key, const char* w) { lua_pushstring(L, w), lua_setfield(L, -2, key); };
+  number("dt", st.dt);
+  word("damping", damping_name(st.damping));
+  number("viscous", st.viscous);
+  number("geometric_factor", st.geometric_factor);
+  number("mass_factor", st.mass_factor);
   push_vec3(L, s.model.gravity);
   lua_setfield(L, -2, "gravity");
-  lua_pushstring(L, integrator_name(st.integrator));
-  lua_setfield(L, -2, "integrator");
-  lua_pushstring(L, mass_mode_name(st.mass_mode));
-  lua_setfield(L, -2, "mass_mode");
+  word("integrator", integrator_name(st.integrator));
+  word("mass_mode", mass_mode_name(st.mass_mode));
   lua_pushinteger(L, st.vie_iterations);
   lua_setfield(L, -2, "vie_iterations");
-  lua_pushnumber(L, st.vie_dt);
-  lua_setfield(L, -2, "vie_dt");
-  lua_pushnumber(L, st.mixed_switch);
-  lua_setfield(L, -2, "mixed_switch");
-  lua_pushstring(L, integrator_name(st.mixed_implicit));
-  lua_setfield(L, -2, "mixed_implicit");
+  number("vie_dt", st.vie_dt);
+  number("mixed_switch", st.mixed_switch);
+  word("mixed_implicit", integrator_name(st.mixed_implicit));
   lua_pushinteger(L, st.threads);
   lua_setfield(L, -2, "threads");
   lua_pushstring(L, s.solver.phase());
@@ -548,29 +525,13 @@ int l_step(lua_State* L) {
   return 1;
 }
 
-int l_position(lua_State* L) {
-  Scene& s = check_scene(L, "position");
-  push_vec3(L, s.model.particles.position[check_particle(L, 2, s, "position")]);
-  return 1;
-}
-
-
-int l_velocity(lua_State* L) {
-  Scene& s = check_scene(L, "velocity");
-  push_vec3(L, s.model.particles.velocity[check_particle(L, 2, s, "velocity")]);
-  return 1;
-}
-
-int l_reaction(lua_State* L) {
-  Scene& s = check_scene(L, "reaction");
-  push_vec3(L, s.solver.reaction(check_particle(L, 2, s, "reaction")));
-  return 1;
-}
-
-int l_state(lua_State* L) {
-  Scene& s = check_scene(L, "state");
-  lua_pushstring(L, state_name(s.model.state(check_particle(L, 2, s, "state"))));
-  return 1;
+// A Lua list of handles.
+void push_list(lua_State* L, Scene& s, const std::vector<std::uint32_t>& ids, void (*push)(lua_State*, Scene&, std::uint32_t)) {
+  lua_createtable(L, int(ids.size()), 0);
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    push(L, s, ids[k]);
+    lua_rawseti(L, -2, lua_Integer(k + 1));
+  }
 }
 
 int l_blocks(lua_State* L) {
@@ -578,11 +539,7 @@ int l_blocks(lua_State* L) {
   std::vector<BlockId> bs;
   if (lua_isnoneornil(L, 2)) bs = s.model.live_blocks();
   else bs = s.model.blocks_of(check_particle(L, 2, s, "blocks"));
-  lua_createtable(L, int(bs.size()), 0);
-  for (std::size_t k = 0; k < bs.size(); ++k) {
-    push_block(L, s, bs[k]);
-    lua_rawseti(L, -2, lua_Integer(k + 1));
-  }
+  push_list(L, s, bs, push_block);
   return 1;
 }
 
@@ -595,23 +552,7 @@ int l_particles(lua_State* L) {
   } else {
     ps = s.model.particles_of(check_block(L, 2, s, "particles"));
   }
-  lua_createtable(L, int(ps.size()), 0);
-  for (std::size_t k = 0; k < ps.size(); ++k) {
-    push_particle(L, s, ps[k]);
-    lua_rawseti(L, -2, lua_Integer(k + 1));
-  }
-  return 1;
-}
-
-int l_kind(lua_State* L) {
-  Scene& s = check_scene(L, "kind");
-  lua_pushstring(L, block_kind_name(s.model.blocks[check_block(L, 2, s, "kind")].kind));
-  return 1;
-}
-
-int l_closed(lua_State* L) {
-  Scene& s = check_scene(L, "closed");
-  lua_pushboolean(L, s.model.blocks[check_block(L, 2, s, "closed")].closed);
+  push_list(L, s, ps, push_particle);
   return 1;
 }
 
@@ -632,24 +573,6 @@ int l_count(lua_State* L) {
   set("bars", m.bars.size());
   set("hinges", m.hinges.size());
   set("beam6s", m.beam6s.size());
-  return 1;
-}
-
-int l_residual(lua_State* L) {
-  Scene& s = check_scene(L, "residual");
-  lua_pushnumber(L, s.solver.residual());
-  return 1;
-}
-
-int l_steps(lua_State* L) {
-  Scene& s = check_scene(L, "steps");
-  lua_pushinteger(L, lua_Integer(s.solver.steps()));
-  return 1;
-}
-
-int l_time(lua_State* L) {
-  Scene& s = check_scene(L, "time");
-  lua_pushnumber(L, s.solver.time());
   return 1;
 }
 
@@ -720,7 +643,6 @@ int l_orientation(lua_State* L) {
   return 0;
 }
 
-
 // --- handles -----------------------------------------------------------------------
 
 int l_handle_index(lua_State* L) {
@@ -759,6 +681,7 @@ void register_model_meta(lua_State* L) {
   lua_setfield(L, -2, "__gc");
   lua_newtable(L);  // methods
   add_command_methods(L);  // first: the methods below take Lua shapes of their own
+  add_readout_methods(L);
   set_fn<l_cable>(L, "cable");
   set_fn<l_beam>(L, "beam");
   set_fn<l_quad_grid>(L, "quad_grid");
@@ -769,18 +692,9 @@ void register_model_meta(lua_State* L) {
   set_fn<l_settings>(L, "settings");
   set_fn<l_run>(L, "run");
   set_fn<l_step>(L, "step");
-  set_fn<l_position>(L, "position");
-  set_fn<l_velocity>(L, "velocity");
-  set_fn<l_reaction>(L, "reaction");
-  set_fn<l_state>(L, "state");
   set_fn<l_blocks>(L, "blocks");
   set_fn<l_particles>(L, "particles");
-  set_fn<l_kind>(L, "kind");
-  set_fn<l_closed>(L, "closed");
   set_fn<l_count>(L, "count");
-  set_fn<l_residual>(L, "residual");
-  set_fn<l_steps>(L, "steps");
-  set_fn<l_time>(L, "time");
   set_fn<l_check>(L, "check");
   set_fn<l_save>(L, "save");
   set_fn<l_save_obj>(L, "save_obj");
