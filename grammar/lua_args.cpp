@@ -6,6 +6,41 @@
 
 namespace tendril::lua {
 
+namespace {
+
+// Under lua_pcall, so that running out of Lua memory while the message is
+// made cannot longjmp out of the catch block that holds the exception.
+// Level 2 is the code that called the binding (level 1 is the binding).
+int where_and_message(lua_State* L) {
+  const char* message = static_cast<const char*>(lua_touserdata(L, 1));
+  luaL_where(L, 2);
+  lua_pushstring(L, message);
+  lua_concat(L, 2);
+  return 1;
+}
+
+// Leaves only the message on the stack, copied into Lua, or Lua's own error
+// when even that failed (out of memory).
+void push_message(lua_State* L, const char* message) noexcept {
+  lua_settop(L, 0);  // a binding has LUA_MINSTACK free slots once its own are dropped
+  lua_pushcfunction(L, where_and_message);
+  lua_pushlightuserdata(L, const_cast<char*>(message));
+  lua_pcall(L, 1, 1, 0);
+}
+
+}  // namespace
+
+int call_binding(lua_State* L, lua_CFunction f) noexcept {
+  try {
+    return f(L);
+  } catch (const std::exception& e) {
+    push_message(L, e.what());
+  } catch (...) {
+    push_message(L, "unknown C++ exception");
+  }
+  return -1;
+}
+
 void arg_error(const char* fn, int arg, const std::string& msg) {
   throw LuaArgError(std::string(fn) + ": argument " + std::to_string(arg) + ": " + msg);
 }

@@ -34,20 +34,19 @@ std::string field_string(lua_State* L, int idx, const char* key, const char* fn,
 Vec3 field_vec3(lua_State* L, int idx, const char* key, const char* fn);
 void push_vec3(lua_State* L, const Vec3& v);
 
+// Runs binding f. Returns its result count, or -1 when it threw: the stack
+// then holds only the error message, with the caller's file and line, as a
+// Lua string, and the exception is destroyed, so raising it leaks nothing.
+// (The guard used to keep the message in a std::string that lua_error
+// longjmped over: every refused call leaked it, issue 13.)
+int call_binding(lua_State* L, lua_CFunction f) noexcept;
+
 // Wraps a binding so that C++ exceptions become Lua errors with the caller's
-// file and line.
+// file and line. lua_error longjmps: this frame holds nothing to destroy.
 template <lua_CFunction F>
 int guarded(lua_State* L) {
-  std::string message;
-  try {
-    return F(L);
-  } catch (const std::exception& e) {
-    message = e.what();
-  }
-  luaL_where(L, 1);
-  lua_pushstring(L, message.c_str());
-  lua_concat(L, 2);
-  return lua_error(L);
+  const int results = call_binding(L, F);
+  return results >= 0 ? results : lua_error(L);
 }
 
 // Sets field `name` of the table on top of the stack to the guarded F.

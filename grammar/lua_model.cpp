@@ -21,6 +21,7 @@
 #include "lua_params.hpp"
 #include "lua_patch_formulation.hpp"
 #include "lua_goals.hpp"
+#include "lua_handles.hpp"
 #include "lua_query.hpp"
 #include "lua_readouts.hpp"
 #include "lua_rules.hpp"
@@ -643,37 +644,6 @@ int l_orientation(lua_State* L) {
   return 0;
 }
 
-// --- handles -----------------------------------------------------------------------
-
-int l_handle_index(lua_State* L) {
-  auto* h = static_cast<Handle*>(lua_touserdata(L, 1));
-  const char* key = lua_tostring(L, 2);
-  if (key && std::string(key) == "id") {
-    lua_pushinteger(L, h->id);
-    return 1;
-  }
-  lua_pushnil(L);
-  return 1;
-}
-
-int l_handle_eq(lua_State* L) {
-  auto* a = static_cast<Handle*>(lua_touserdata(L, 1));
-  auto* b = static_cast<Handle*>(lua_touserdata(L, 2));
-  lua_pushboolean(L, a && b && a->scene == b->scene && a->id == b->id && a->generation == b->generation);
-  return 1;
-}
-
-int l_particle_tostring(lua_State* L) {
-  auto* h = static_cast<Handle*>(lua_touserdata(L, 1));
-  lua_pushfstring(L, "particle %d", int(h->id));
-  return 1;
-}
-
-int l_block_tostring(lua_State* L) {
-  auto* h = static_cast<Handle*>(lua_touserdata(L, 1));
-  lua_pushfstring(L, "block %d", int(h->id));
-  return 1;
-}
 
 void register_model_meta(lua_State* L) {
   luaL_newmetatable(L, kModelMeta);
@@ -707,16 +677,7 @@ void register_model_meta(lua_State* L) {
   add_multires_methods(L);
   lua_setfield(L, -2, "__index");
   lua_pop(L, 1);
-  for (const char* meta : {kParticleMeta, kBlockMeta}) {
-    luaL_newmetatable(L, meta);
-    lua_pushcfunction(L, l_handle_index);
-    lua_setfield(L, -2, "__index");
-    lua_pushcfunction(L, l_handle_eq);
-    lua_setfield(L, -2, "__eq");
-    lua_pushcfunction(L, meta == kParticleMeta ? l_particle_tostring : l_block_tostring);
-    lua_setfield(L, -2, "__tostring");
-    lua_pop(L, 1);
-  }
+  register_handle_metatables(L);
 }
 
 }  // namespace
@@ -736,6 +697,7 @@ void open_tendril(lua_State* L, const SceneOptions& options) {
   lua_setfield(L, -2, "seed");
   lua_pushstring(L, options.out_dir.c_str());
   lua_setfield(L, -2, "out_dir");
+  protect_metatables(L);
 }
 
 }  // namespace tendril::lua

@@ -302,9 +302,25 @@ Scene::~Scene() {
   for (Trigger* t : triggers) delete t;
 }
 
-std::string describe_args(lua_State* L, int first, int last) {
+namespace {
+
+// Tables nested deeper than kDescribeDepth are written "{...}", and values
+// after the first kDescribeValues "...": a table that refers to itself (a
+// config with a back-reference) recursed for ever, a deep one pushed past
+// Lua's stack, and a wide one that refers to itself n^depth times would hang
+// (issue 13).
+constexpr int kDescribeDepth = 4;
+constexpr int kDescribeValues = 256;
+
+std::string describe(lua_State* L, int first, int last, int depth, int& budget) {
   std::string out;
+  // Each level holds at most two values (a key and its value) on the stack.
+  if (!lua_checkstack(L, 2)) throw std::runtime_error("out of Lua stack describing the arguments");
   for (int k = first; k <= last; ++k) {
+    if (budget-- <= 0) {
+      out += out.empty() ? "..." : " ...";
+      break;
+    }
     std::string item;
     if (auto* h = static_cast<Handle*>(luaL_testudata(L, k, kParticleMeta))) item = "p" + std::to_string(h->id);
     else if (auto* b = static_cast<Handle*>(luaL_testudata(L, k, kBlockMeta))) item = "b" + std::to_string(b->id);
@@ -312,12 +328,13 @@ std::string describe_args(lua_State* L, int first, int last) {
       item = luaL_tolstring(L, k, nullptr);  // a copy: lua_tostring would turn the argument itself into a string
       lua_pop(L, 1);
     }
+    else if (lua_istable(L, k) && depth >= kDescribeDepth) item = "{...}";
     else if (lua_istable(L, k) && lua_rawlen(L, k) > 0) {
       item = "{";
       const lua_Integer n = lua_Integer(lua_rawlen(L, k));
       for (lua_Integer i = 1; i <= n && i <= 8; ++i) {
         lua_rawgeti(L, k, i);
-        item += (i > 1 ? " " : "") + describe_args(L, lua_gettop(L), lua_gettop(L));
+        item += (i > 1 ? " " : "") + describe(L, lua_gettop(L), lua_gettop(L), depth + 1, budget);
         lua_pop(L, 1);
       }
       item += n > 8 ? " ...}" : "}";
@@ -327,7 +344,7 @@ std::string describe_args(lua_State* L, int first, int last) {
       while (lua_next(L, k)) {
         if (lua_type(L, -2) == LUA_TSTRING) {
           std::string key = lua_tostring(L, -2);
-          fields.push_back(key + "=" + describe_args(L, lua_gettop(L), lua_gettop(L)));
+          fields.push_back(key + "=" + describe(L, lua_gettop(L), lua_gettop(L), depth + 1, budget));
         }
         lua_pop(L, 1);
       }
@@ -339,6 +356,13 @@ std::string describe_args(lua_State* L, int first, int last) {
     out += (out.empty() ? "" : " ") + item;
   }
   return out;
+}
+
+}  // namespace
+
+std::string describe_args(lua_State* L, int first, int last) {
+  int budget = kDescribeValues;
+  return describe(L, first, last, 0, budget);
 }
 
 bool fire_triggers(lua_State* L, Scene& s, bool converged) {

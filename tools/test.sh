@@ -9,10 +9,9 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 if [ "${1:-}" = --sanitize ]; then
   shift
-  cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=Release -DTENDRIL_SANITIZE=ON >/dev/null
+  cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=Release -DTENDRIL_SANITIZE=ON "${launcher[@]}" >/dev/null
   cmake --build build-sanitize --parallel "$(nproc)"
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:detect_stack_use_after_return=0
-  export LSAN_OPTIONS=suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   cd build-sanitize
 else

@@ -233,3 +233,31 @@ assert(not ok and err:find("beyond 1e%+12 m from the origin"), err)
 )");
   CHECK(error == "");
 }
+
+TEST_CASE("argument tables that refer to themselves, nest deep or fan out are described within bounds") {
+  // The journal's description of a call recursed for ever into a table that
+  // refers to itself, and pushed past Lua's stack for one 1000 deep.
+  const std::string error = run("describe-bounded", std::string(kTwoParticles) + R"(
+local self = {} self[1] = self
+local ok, err = pcall(m.particle, m, self)
+assert(not ok and err:find("particle: argument 2: expected"), err)
+local deep = {} local d = deep
+for k = 1, 1000 do d[1] = {} d = d[1] end
+ok, err = pcall(m.particle, m, deep)
+assert(not ok and err:find("particle: argument 2: expected"), err)
+-- 100 keys that each refer back: 100^4 values at depth 4 without a budget.
+local wide = {} for k = 1, 100 do wide["k" .. k] = wide end
+local clock = os.clock()
+ok, err = pcall(m.particle, m, wide)
+assert(not ok and os.clock() - clock < 1, os.clock() - clock)
+-- What is journaled shows the cut, four tables deep.
+local r = tendril.rule{name = "takes", production = function(m, t) m:particle{0, 0, 2} end}
+assert(m:apply(r, self))
+local j = m:journal()
+assert(j[#j].rule == "takes" and j[#j].args == "{{{{{...}}}}}", j[#j].args)
+assert(m:apply(r, {x = {{1, 2}}}, 3))
+j = m:journal()
+assert(j[#j].args == "{x={{1 2}}} 3", j[#j].args)
+)");
+  CHECK(error == "");
+}
