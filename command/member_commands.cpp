@@ -98,7 +98,42 @@ void declare_members(std::vector<Command>& out) {
                    t.model.set_orientation(particle(a, 0), Quat(a[1].number, a[2].number, a[3].number, a[4].number));
                    return nothing();
                  }});
-  out.push_back({"torque", "an external moment on a particle [N m] (6-DOF beams)", Effect::Setting,
+  out.push_back({"rest_shape",
+                 "a beam's rest shape: straight (bending-active: the built curve is prestress) or current (stress free as it is now)",
+                 Effect::Topology,
+                 {{"beam", Type::Block, "a beam"}, {"shape", Type::Word, "", {}, {"straight", "current"}}},
+                 Returns::Nothing,
+                 [](Target& t, Args& a) {
+                   RestShape r;
+                   parse_rest_shape(a[1].word, r);
+                   t.model.set_rest_shape(block(a, 0), r);
+                   return nothing();
+                 },
+                 1, Returns::Word, [](Target& t, const Args& a) {
+                   Result r;
+                   r.kind = Returns::Word;
+                   r.word = rest_shape_name(t.model.rest_shape(block(a, 0)));
+                   return r;
+                 }});
+  out.push_back({"clamp", "fixes the tangent of a 3-DOF beam at its end particle (a clamp hinge)", Effect::Topology,
+                 {{"particle", Type::Particle, "the beam's end"},
+                  {"beam", Type::Block, "the beam"},
+                  {"direction", Type::Vector, "the fixed tangent into the beam; 0 0 0: along its end segment now"}},
+                 Returns::Nothing, [](Target& t, Args& a) {
+                   t.model.set_clamp(particle(a, 0), block(a, 1), a[2].vector);
+                   return nothing();
+                 }});
+  out.back().lua = "";  // m:clamp(p, beam [, direction]) (grammar/lua_clamp.cpp)
+  out.push_back({"unclamp", "frees a clamped beam end", Effect::Topology,
+                 {{"particle", Type::Particle, "the beam's end"}, {"beam", Type::Block, "the beam"}}, Returns::Nothing,
+                 [](Target& t, Args& a) {
+                   t.model.remove_clamp(particle(a, 0), block(a, 1));
+                   return nothing();
+                 }});
+  out.push_back({"torque",
+                 "an external moment on a particle [N m]: on a 6-DOF beam a torque, on a 3-DOF beam force couples across "
+                 "its segments",
+                 Effect::Setting,
                  {{"particle", Type::Particle, "a particle"}, {"moment", Type::Vector, "the moment [N m]"}},
                  Returns::Nothing,
                  [](Target& t, Args& a) {

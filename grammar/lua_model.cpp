@@ -13,6 +13,7 @@
 #include "io/obj.hpp"
 #include "command/registry.hpp"
 #include "lua_args.hpp"
+#include "lua_clamp.hpp"
 #include "lua_commands.hpp"
 #include "lua_files.hpp"
 #include "lua_csv.hpp"
@@ -297,9 +298,12 @@ int l_beam(lua_State* L) {
   command::Entry entry(s.session, fn, describe_args(L, 2, lua_gettop(L)));
   check_table(L, 2, fn);
   check_keys(L, 2, fn, {"points", "particles", "from", "direction", "segments", "closed", "centre", "normal", "radius", "start",
-                        "EA", "EI", "E", "A", "I", "prestress", "line_mass", "dofs", "GJ", "EIy", "EIz"});
+                        "EA", "EI", "E", "A", "I", "prestress", "line_mass", "dofs", "GJ", "EIy", "EIz", "rest"});
   Section sec = read_section(L, 2, fn, true);
   const int dofs = read_beam6_section(L, 2, fn, sec);
+  const std::string rest = field_string(L, 2, "rest", fn, "straight");
+  if (rest != "straight" && rest != "current")
+    key_error(fn, "rest", "must be \"straight\" or \"current\", got \"" + rest + "\"");
   const bool ring = has_field(L, 2, "centre");
   if (ring && has_field(L, 2, "closed") && !field_bool(L, 2, "closed", fn, true))
     key_error(fn, "closed", "cannot be false with 'centre': a ring is closed");
@@ -350,6 +354,7 @@ int l_beam(lua_State* L) {
       args[1] = Value::of_word("6");
       apply_command(L, s, "formulation", std::move(args), fn);
     }
+    if (rest == "current") apply_command(L, s, "rest_shape", {beam, Value::of_word(rest)}, fn);
   });
   entry.done();
   return push_result(L, s, made);
@@ -675,6 +680,7 @@ void register_model_meta(lua_State* L) {
   add_goal_methods(L);
   add_meshing_methods(L);
   add_multires_methods(L);
+  add_clamp_methods(L);
   lua_setfield(L, -2, "__index");
   lua_pop(L, 1);
   register_handle_metatables(L);

@@ -4,6 +4,7 @@
 // drift apart: the pin-ended elastica, the hanging chain, the straight
 // cantilever, Bathe & Bolourchi's 45-degree bend and the prestressed ring of
 // thesis 5.4.1.2.
+#include <numbers>
 #include <vector>
 
 #include "model/model.hpp"
@@ -57,23 +58,86 @@ struct Cantilever {
   ParticleId tip() const { return ps.back(); }
 };
 
+// A straight cantilever along x from the origin, n segments, 3 DOF: the
+// root held in place and clamped along x (Model::set_clamp).
+struct Cantilever3 {
+  Model m;
+  std::vector<ParticleId> ps;
+  BlockId beam;
+  Cantilever3(int n, double L, const Section& s);
+  ParticleId tip() const { return ps.back(); }
+};
+
+// Mattiasson's cantilever (1981): L = 1 m, EI = 1 N m^2, EA = 1e5 N (an
+// axial strain of 1e-4 at most), n segments, 3 DOF (Cantilever3: root held
+// and clamped) or 6 DOF (root fully locked), under a tip load P in -y of
+// PL^2/EI = 1 ... 10. kTable: his horizontal and vertical tip
+// displacements u/L, w/L of the inextensible elastica (reproduced to 5
+// digits by shooting on theta'' = -(P/EI) cos(theta), theta(0) = 0,
+// theta'(L) = 0).
+struct Mattiasson {
+  static constexpr double kTable[10][2] = {{0.05643, 0.30172}, {0.16064, 0.49346}, {0.25442, 0.60325},
+                                           {0.32894, 0.66996}, {0.38763, 0.71379}, {0.43459, 0.74457},
+                                           {0.47293, 0.76737}, {0.50483, 0.78498}, {0.53182, 0.79906},
+                                           {0.55500, 0.81061}};
+  Model m;
+  std::vector<ParticleId> ps;
+  BlockId beam;
+  Mattiasson(int n, int dofs);
+  void set_load(double PL2_EI);  // the tip load in units of EI / L^2
+  double u() const;              // (L - x_tip) / L
+  double w() const;              // -y_tip / L
+  // The larger relative error of u and w against kTable[k] (PL^2/EI = k + 1).
+  double error(int k) const;
+};
+
 // Bathe & Bolourchi's 45-degree bend: R = 100 in, 1 x 1 in section,
 // E = 1e7 psi, G = E/2 (EA = 1e7 lb, EI = E/12, GJ = G/6 lb in^2), n
 // elements (the published 8), 6 DOF, root fully locked, 600 lb at the tip
 // normal to the bend's plane. The bend starts at the origin along x and
-// turns towards +y; its curved shape is its rest shape (appendix A.1b, no
-// pre-stress). Simo & Vu-Quoc's tip displacement: kReference.
+// turns towards +y; it is one beam whose curved shape is its rest shape
+// (Model::set_rest_shape Current, m:beam{rest = "current"}: appendix A.1b,
+// no pre-stress). Simo & Vu-Quoc's tip displacement under 600 lb:
+// kReference; their tip positions under 300 and 600 lb (their x and y are
+// our y and x): tip_reference.
 struct BentCantilever {
   static inline const Vec3 kReference{-23.48, -13.50, 53.37};  // in
   Model m;
   std::vector<ParticleId> ps;
   BlockId beam;
   Vec3 start;  // the tip before loading
-  explicit BentCantilever(int n = 8);
+  explicit BentCantilever(int n = 8, double load = 600);
   ParticleId tip() const { return ps.back(); }
   Vec3 displacement() const { return m.particles.position[tip()] - start; }
-  // The largest of the three components' relative errors.
+  // The largest of the three components' relative errors (600 lb).
   double error() const;
+  // Simo & Vu-Quoc (1986), 8 elements: the tip under 300 lb at (58.84,
+  // 22.33, 40.08) in, under 600 lb at (47.23, 15.79, 53.37) in.
+  static Vec3 tip_reference(double load);
+  // |tip - reference| / |reference - start|: the tip's distance from the
+  // reference over the reference's displacement.
+  double tip_error(double load) const;
+};
+
+// A thin circular ring built curved at rest (Model::set_rest_shape
+// Current), 3 DOF: radius R = 1 m, EI = 1 N m^2, EA = 1e5 N, n segments (a
+// multiple of 4), in the plane z = 0 (held in z), squeezed along its y
+// diameter by P (down at the top node, up at the bottom one). The top and
+// bottom stay on x = 0 and the sides on y = 0 by symmetry, so those locks
+// take the rigid motions without a force. Exact (thin ring in bending,
+// Roark): the loaded diameter shortens by delta = P R^3 / EI (pi/4 - 2/pi);
+// EA adds P R / EA (pi/4 + ...) ~ 1e-5 of it.
+struct SqueezedRing {
+  static constexpr double R = 1, EI = 1, EA = 1e5;
+  Model m;
+  std::vector<ParticleId> ps;
+  BlockId beam;
+  ParticleId top, bottom;
+  double P;
+  SqueezedRing(int n, double load = 1e-3);
+  static double exact_shortening(double P) { return P * R * R * R / EI * (std::numbers::pi / 4 - 2 / std::numbers::pi); }
+  double shortening() const;  // of the loaded diameter [m]
+  double error() const;       // |shortening / exact - 1|
 };
 
 // Prestressed ring under out-of-plane loads (thesis 5.4.1.2, fig. 5.14;

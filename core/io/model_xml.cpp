@@ -245,6 +245,14 @@ constexpr const char* kEndANames[4] = {"aw", "ax", "ay", "az"};
 constexpr const char* kEndBNames[4] = {"bw", "bx", "by", "bz"};
 constexpr const char* kQuadNames[4] = {"a", "b", "c", "d"};  // <quad>: corners in order
 
+// A clamped beam end (Model::set_clamp): its fixed tangent, on its <node>.
+void write_clamp(Writer& w, const Model& m, Dart d) {
+  if (!m.map.is_free(1, d) || m.clamp[d].isZero(0)) return;
+  w.attr("tx", m.clamp[d].x());
+  w.attr("ty", m.clamp[d].y());
+  w.attr("tz", m.clamp[d].z());
+}
+
 // A patch's formulation (attributes): nothing for bars.
 void write_membrane(Writer& w, const Membrane& mem) {
   if (!mem.cst()) return;
@@ -370,11 +378,16 @@ std::string write_document(const Model& m, const SolverSettings& s) {
         w.attr("id", id);
         w.attr("closed", unsigned(blk.closed ? 1 : 0));
         write_beam_section(w, blk);
+        if (blk.rest == RestShape::Current) w.attr("rest", rest_shape_name(blk.rest));
         // Path order from the block's start dart, as particles_of walks it.
         Dart d = blk.dart;
         for (std::size_t guard = 0; guard <= blk.darts; ++guard) {
           w.open("node");
           w.attr("p", dense[m.dart_particle[d]]);
+          // A 3-DOF hinge's rest curvature (absent: straight at rest).
+          if (blk.dofs == 3 && !m.map.is_free(1, d) && m.rest_curvature[d] != 0)
+            w.attr("curvature", m.rest_curvature[d]);
+          write_clamp(w, m, d);
           w.close();
           w.open("segment");
           w.attr("rest", m.rest_length[d]);
@@ -387,6 +400,7 @@ std::string write_document(const Model& m, const SolverSettings& s) {
           if (next == e) {
             w.open("node");
             w.attr("p", dense[m.dart_particle[e]]);
+            write_clamp(w, m, e);
             w.close();
             break;
           }
@@ -511,6 +525,9 @@ struct BlockRecord {
   Section section;
   bool closed = false;
   unsigned dofs = 3;
+  RestShape rest = RestShape::Straight;  // beams
+  std::vector<double> curvature;         // beams: per node, its hinge's rest curvature
+  Vec3 clamp_first = Vec3::Zero(), clamp_last = Vec3::Zero();  // beams: clamped ends' tangents
   int rows = 0, cols = 0;  // 0: a patch of <quad>s, nodes holding their corners four by four
   std::vector<unsigned> nodes;  // file ids: cable ends, beam path, grid row-major
   std::vector<EdgeRecord> edges;
@@ -808,14 +825,27 @@ BlockRecord Reader::read_beam(const tinyxml2::XMLElement* e) const {
   b.dofs = a.index("dofs", 3);
   if (b.dofs != 3 && b.dofs != 6) a.bad("dofs", "must be 3 or 6 (DOF per particle)");
   b.section = a.section(true);
+  if (const char* rest = a.raw("rest"); rest && !parse_rest_shape(rest, b.rest))
+    a.bad("rest", "must be \"straight\" or \"current\", not " + quoted(rest));
   a.done();
   std::vector<double> rests;
   std::vector<std::pair<Quat, Quat>> ends;
   std::vector<const tinyxml2::XMLElement*> node_elements;
+  const tinyxml2::XMLElement* clamp_node = nullptr;  // the last clamped node after the first
   for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
     Attributes ca(*this, c);
     if (std::strcmp(c->Name(), "node") == 0) {
       b.nodes.push_back(ca.index("p"));
+      b.curvature.push_back(ca.real("curvature", 0.0));
+      if (!(b.curvature.back() >= 0)) ca.bad("curvature", "must be >= 0 [1/m]");
+      if (b.curvature.back() != 0 && b.dofs != 3) ca.bad("curvature", "belongs to 3-DOF beams (6 DOF: the segments' beam ends)");
+      const Vec3 t(ca.real("tx", 0.0), ca.real("ty", 0.0), ca.real("tz", 0.0));
+      if (!t.isZero(0)) {
+        if (std::abs(t.norm() - 1) > 1e-9) ca.bad("tx", "ty, tz: a clamp's tangent must be a unit vector");
+        if (b.closed) ca.bad("tx", "a ring has no ends to clamp");
+        (b.nodes.size() == 1 ? b.clamp_first : b.clamp_last) = t;
+        if (b.nodes.size() > 1) clamp_node = c;
+      }
       node_elements.push_back(c);
     } else if (std::strcmp(c->Name(), "segment") == 0) {
       double rest = ca.real("rest");
@@ -832,6 +862,7 @@ BlockRecord Reader::read_beam(const tinyxml2::XMLElement* e) const {
   if (n < need)
     fail(e, "a" + std::string(b.closed ? " closed" : "n open") + " beam needs at least " + std::to_string(need) +
                 " <node p> children, got " + std::to_string(n));
+  if (clamp_node && clamp_node != node_elements.back()) fail(clamp_node, "only the first and last <node> of a beam (its ends) are clamped");
   const std::size_t segments = b.closed ? n : n - 1;
   if (rests.size() != segments)
     fail(e, std::to_string(n) + " <node> children need " + std::to_string(segments) + " <segment rest> children, got " +
@@ -1133,7 +1164,6 @@ void build(const Reader& reader, const Document& d, Model& m) {
       m.set_point_mass(p, r.point_mass);
       m.particles.orientation[p] = r.frame;
       m.particles.angular_velocity[p] = r.w;
-      m.set_moment(p, r.moment);
       id_of[r.id] = p;
     } catch (const ModelError& e) {
       reader.fail(r.element, e.what());
@@ -1164,7 +1194,11 @@ void build(const Reader& reader, const Document& d, Model& m) {
         // of particles twice), with the stored ends of a 6-DOF beam; the
         // Beam6 elements follow in rebuild_elements below.
         if (r.dofs == 6) m.blocks[b].dofs = 6;
+        m.blocks[b].rest = r.rest;
         Dart d = m.blocks[b].dart;
+        for (std::size_t k = 0; k < r.curvature.size() && k < r.edges.size(); ++k, d = m.map.alpha(1, m.map.alpha(0, d)))
+          if (!m.map.is_free(1, d)) m.rest_curvature[d] = m.rest_curvature[m.map.alpha(1, d)] = r.curvature[k];
+        d = m.blocks[b].dart;
         for (const EdgeRecord& e : r.edges) {
           m.rest_length[d] = m.rest_length[m.map.alpha(0, d)] = e.rest;
           if (r.dofs == 6) {
@@ -1173,6 +1207,12 @@ void build(const Reader& reader, const Document& d, Model& m) {
           }
           d = m.map.alpha(1, m.map.alpha(0, d));
         }
+        // Clamped ends: d is the last end dart now (an open beam).
+        for (auto [end, t] : {std::pair{m.blocks[b].dart, r.clamp_first}, std::pair{d, r.clamp_last}})
+          if (!t.isZero(0)) {
+            m.clamp[end] = t;
+            m.clamp_darts.push_back(end);
+          }
       } else {
         std::map<std::pair<ParticleId, ParticleId>, double> rest;
         for (const EdgeRecord& e : r.edges) {
@@ -1195,6 +1235,13 @@ void build(const Reader& reader, const Document& d, Model& m) {
     }
   }
   m.rebuild_elements();
+  for (const ParticleRecord& r : d.particles) {  // once the beams it acts on exist
+    try {
+      m.set_moment(id_of.at(r.id), r.moment);
+    } catch (const ModelError& e) {
+      reader.fail(r.element, e.what());
+    }
+  }
   m.gravity = d.gravity;
   for (const JointRecord& j : d.joints) {
     auto it = id_of.find(j.particle);

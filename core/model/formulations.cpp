@@ -41,6 +41,10 @@ void Model::set_beam_formulation(BlockId b, int dofs) {
   }
   blocks[b].dofs = std::uint8_t(dofs);
   if (dofs == 6) init_beam_frames(b);
+  if (blocks[b].rest == RestShape::Current) {  // the curved rest shape goes along
+    if (dofs == 6) tilt_rest_ends(b);
+    else rest_curvature_from_ends(b);
+  }
   for (Dart d : darts) {
     if (dart_bar[d] == kNone && dart_beam6[d] == kNone) add_edge_element(d);
     if (dart_hinge[d] == kNone) add_vertex_element(d);
@@ -158,6 +162,7 @@ void Model::release_beam_prestress(BlockId b) {
     set_edge_rest_length(d, length);
     refresh_beam6(d);
   }
+  blocks[b].rest = RestShape::Current;
 }
 
 }  // namespace tendril

@@ -22,7 +22,9 @@ Model::Model()
       cst_first(map.add_column<std::uint8_t>(0)),
       cst_reference(map.add_column<CstReference>(CstReference{})),
       dart_cst(map.add_column<ElementIndex>(kNone)),
-      merge_origin(map.add_column<MergeOrigin>(MergeOrigin{})) {
+      merge_origin(map.add_column<MergeOrigin>(MergeOrigin{})),
+      rest_curvature(map.add_column<double>(0.0)),
+      clamp(map.add_column<Vec3>(Vec3::Zero())) {
   UndoLog* log = &map.undo_log();
   particles.attach(log);
   blocks.attach(log);
@@ -33,6 +35,7 @@ Model::Model()
   joints.items.attach(log);
   goals.attach(log);
   csts.attach(log);
+  clamp_darts.attach(log);
 }
 
 void Model::require_particle(ParticleId p, const char* what) const {
@@ -73,6 +76,7 @@ BlockId Model::new_block(BlockKind k, Section s, bool closed) {
   Block& blk = blocks[b];
   blk.kind = k;
   blk.closed = closed;
+  blk.rest = RestShape::Straight;
   blk.dofs = 3;
   blk.membrane = Membrane{};
   blk.section = s;
@@ -260,7 +264,7 @@ void Model::add_hinge(Dart d) {
   ElementIndex h = static_cast<ElementIndex>(hinges.size());
   Hinge hinge{};
   hinge.EI = blocks[dart_block[d]].section.EI;
-  hinge.rest_curvature = 0;
+  hinge.rest_curvature = rest_curvature[d];
   hinge.dart = d;
   hinges.items.push_back(hinge);
   dart_hinge[d] = dart_hinge[e] = h;
@@ -475,6 +479,14 @@ void Model::set_orientation(ParticleId p, const Quat& q) {
 void Model::set_moment(ParticleId p, const Vec3& m) {
   require_particle(p, "torque");
   if (!m.allFinite()) throw ModelError("torque: the moment is not finite");
+  if (!m.isZero(0) && particles.rot_degree[p] == 0) {
+    bool segment = false;  // a 3-DOF beam segment to put the couple across
+    for (Dart d : darts_of(p)) segment |= blocks[dart_block[d]].kind == BlockKind::Beam && !map.is_free(0, d);
+    if (!segment)
+      throw ModelError("torque: particle " + std::to_string(p) +
+                       " is in no beam; a moment needs a 6-DOF beam (rotations) or a 3-DOF beam segment to act across");
+  }
+  ++moment_revision;
   particles.moment[p] = m;
 }
 

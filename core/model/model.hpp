@@ -16,9 +16,19 @@
 
 namespace tendril {
 
+// The rest shape of a beam (rest_shape.cpp): Straight, the bending-active
+// default (a beam built curved is prestressed by bending), or Current: the
+// shape it had when it was set is stress free (3-DOF hinges keep the rest
+// curvature of their vertex, 6-DOF beam ends the rest frames of appendix
+// A.2, fig. A.1b).
+enum class RestShape : std::uint8_t { Straight, Current };
+const char* rest_shape_name(RestShape r);  // "straight", "current"
+bool parse_rest_shape(const std::string& name, RestShape& out);
+
 struct Block {
   BlockKind kind = BlockKind::Cable;
   bool closed = false;  // a beam ring
+  RestShape rest = RestShape::Straight;  // beams
   // Beams: 3 (spline beam, bars and hinges, eq. 3.41-3.43) or 6 DOF per
   // particle (Beam6 elements, eq. 3.44-3.50). Other blocks: 3.
   std::uint8_t dofs = 3;
@@ -116,7 +126,45 @@ class Model {
   // 6-DOF beams: the current shape becomes the rest shape (appendix A.1,
   // fig. A.1b, no pre-stress): every beam end along its element's chord,
   // rest lengths the current lengths. For analysing initially curved beams.
+  // Also marks the beam's rest shape Current.
   void release_beam_prestress(BlockId b);
+
+  // --- rest shape of beams (rest_shape.cpp) ----------------------------------
+  // Current: the beam's shape now becomes its rest shape, 3 or 6 DOF: rest
+  // lengths the current lengths; 3-DOF hinges the current curvature of their
+  // vertex (eq. 3.41's 2 sin(alpha) / Lc); 6-DOF beam ends along their
+  // chords (release_beam_prestress). Straight: every vertex straight at rest
+  // again (hinges 0; 6-DOF joints share one beam end, A.4, averaged from the
+  // two they had); rest lengths stay. Set again, Current takes the shape of
+  // that moment. Switching 3 <-> 6 DOF keeps a Current rest shape: the
+  // turning angle of the rest polygon at each vertex goes from the hinge's
+  // rest curvature to the two beam ends and back. Rules keep a curved rest
+  // shape: rule 13 gives the new vertex the mean rest curvature of its two
+  // neighbours (theirs stay, so a refined arc keeps its radius; 6-DOF:
+  // unchanged, the element is split at its cubic's middle), rule 9 on a
+  // Current beam takes the joint it makes as it is (no prestress), rules 11
+  // and 16 leave the other vertices as they were.
+  void set_rest_shape(BlockId b, RestShape r);
+  RestShape rest_shape(BlockId b) const;
+
+  // --- clamps of 3-DOF beam ends (clamps.cpp) ------------------------------
+  // A clamp fixes the tangent of beam b at its end particle p: a hinge
+  // between the end segment and the fixed unit `direction` (pointing into
+  // the beam; zero: along the end segment now), with M = 2 EI sin(alpha) /
+  // L1 (alpha the angle between them, L1 the segment's length): the end
+  // vertex owns half of its segment, so twice an interior hinge's stiffness,
+  // and a circle through the particles is exact. It is a moment on the
+  // beam only (p's locks hold it in place or not); straight at rest. A
+  // 3-DOF boundary condition: refused on 6-DOF beams (lock the end's
+  // rotations), kept while a beam switches to 6 DOF and back, inert
+  // meanwhile. The clamp goes with its end (rules 11, 18); rule 9 refuses
+  // to grow a clamped end.
+  void set_clamp(ParticleId p, BlockId b, const Vec3& direction = Vec3::Zero());
+  void remove_clamp(ParticleId p, BlockId b);
+  bool clamped(ParticleId p, BlockId b, Vec3* direction = nullptr) const;
+  // Whether dart d carries a clamp that acts now (a live end dart of a
+  // 3-DOF beam with a direction).
+  bool clamp_acts(Dart d) const;
 
   // --- patches: a quad grid built by hand until meshing lands -------------
   // grid[r * cols + c] are existing particles; quads are sewn by alpha2 and
@@ -176,7 +224,12 @@ class Model {
   // The node frame of p; on a 6-DOF beam its beam ends turn with it. Must be
   // a rotation (normalised here).
   void set_orientation(ParticleId p, const Quat& q);
-  void set_moment(ParticleId p, const Vec3& m);  // external torque [N m]
+  // External moment [N m]. On a particle with rotations (a 6-DOF beam) a
+  // torque; on one without, the equivalent force couples across its 3-DOF
+  // beam segments (physics/couples.cpp). Refused on a particle in no beam
+  // (a zero moment is always taken).
+  void set_moment(ParticleId p, const Vec3& m);
+  std::uint64_t moment_revision = 0;  // moves whenever set_moment is called
   // Goals (elements.hpp, goals.cpp): validated (live particles, finite
   // vectors, a non-zero normal or direction (kept as given), a length >= 0,
   // a weight > 0) before anything changes; returns its index. A goal goes
@@ -266,6 +319,15 @@ class Model {
   DartColumn<CstReference>& cst_reference;
   DartColumn<ElementIndex>& dart_cst;
   DartColumn<MergeOrigin>& merge_origin;  // rules 3-5 (operations.cpp)
+  // Per dart of a beam vertex (both darts alike): the rest curvature [1/m]
+  // its 3-DOF hinge takes (Hinge::rest_curvature), 0 when straight at rest.
+  // Kept (unused) while the beam is 6 DOF. rest_shape.cpp.
+  DartColumn<double>& rest_curvature;
+  // Per end dart of a beam: the clamp's fixed unit tangent into the beam,
+  // zero when unclamped (clamps.cpp); clamp_darts every dart clamped since
+  // (clamp_acts tells which still are): what the solver walks.
+  DartColumn<Vec3>& clamp;
+  LoggedVector<Dart> clamp_darts;
 
   void require_particle(ParticleId p, const char* what) const;
   void require_block(BlockId b, const char* what) const;
@@ -312,6 +374,12 @@ class Model {
   void remove_edge_element(Dart d);
   void add_vertex_element(Dart d);
   void init_beam_frames(BlockId b);          // formulations.cpp
+  // rest_shape.cpp: a Current beam switching formulation. 3 -> 6: turns the
+  // two beam ends of each joint apart by the rest turning angle of its
+  // hinge; 6 -> 3: the hinges' rest curvatures from the beam ends.
+  void tilt_rest_ends(BlockId b);
+  void rest_curvature_from_ends(BlockId b);
+  void set_vertex_rest_curvature(Dart d, double kappa);  // both darts of the vertex and its hinge
   std::vector<Dart> path_darts(BlockId b) const;  // per segment, its dart at the start node
   // CST elements (patch_formulations.cpp): one per dart marked cst_first.
   void add_cst(Dart d);

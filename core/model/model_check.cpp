@@ -63,7 +63,8 @@ std::string Model::check_dart(Dart d) const {
     if (hg.dart != d && hg.dart != map.alpha(1, d)) return "hinge " + std::to_string(h) + " does not point back";
     Dart hd = hg.dart;
     if (hg.i != dart_particle[map.alpha(0, hd)] || hg.j != dart_particle[hd] ||
-        hg.k != dart_particle[map.alpha(0, map.alpha(1, hd))] || hg.EI != blk.section.EI)
+        hg.k != dart_particle[map.alpha(0, map.alpha(1, hd))] || hg.EI != blk.section.EI ||
+        hg.rest_curvature != rest_curvature[hd] || rest_curvature[hd] != rest_curvature[map.alpha(1, hd)])
       return "hinge " + std::to_string(h) + " is stale";
     if ((h < hinges.awake) != (!particles.passive[hg.i] && !particles.passive[hg.j] && !particles.passive[hg.k]))
       return "hinge " + std::to_string(h) + " is on the wrong side of the awake/dormant partition";

@@ -338,6 +338,13 @@ ParticleId Model::insert_particle(ParticleId a, ParticleId b) {
   }
   add_edge_element(d);
   add_edge_element(e);
+  // The new vertex's rest curvature: the mean of its neighbours' (those that
+  // are beam vertices), which keep theirs: a refined arc keeps its radius.
+  double kappa = 0;
+  int vertices = 0;
+  for (Dart x : {d, e})
+    if (!map.is_free(1, x)) kappa += rest_curvature[x], ++vertices;
+  rest_curvature[d2] = rest_curvature[e2] = vertices ? kappa / vertices : 0.0;
   add_vertex_element(d2);
   refresh_hinge(d);
   refresh_hinge(e);

@@ -44,8 +44,10 @@ std::pair<ParticleId, BlockId> Model::split_beam(BlockId b, ParticleId p) {
   } else {
     const Section section = blk.section;
     const std::uint8_t dofs = blk.dofs;
+    const RestShape rest = blk.rest;
     nb = new_block(BlockKind::Beam, section, false);
     blocks[nb].dofs = dofs;
+    blocks[nb].rest = rest;
     blocks[nb].dart = out;
     std::size_t moved = 0;
     Dart d = out;

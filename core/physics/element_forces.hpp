@@ -36,6 +36,30 @@ inline HingeForces hinge_forces(const Hinge& h, const Vec3* x) {
   return f;
 }
 
+// Clamp of a 3-DOF beam end p (Model::set_clamp): the hinge between the
+// fixed unit tangent t and the end segment p -> q, M = 2 EI sin(alpha) / L1
+// (the end vertex owns half its segment: twice an interior hinge's
+// stiffness; a circle through the particles is exact). q takes fq, normal
+// to the segment in the plane of t and the segment, p takes -fq: the
+// clamp's reaction is a moment only. k: 8 EI / L1^3 on both.
+struct ClampForces {
+  Vec3 fq = Vec3::Zero();
+  double k = 0;
+};
+
+inline ClampForces clamp_forces(const Vec3& t, double EI, const Vec3& xp, const Vec3& xq) {
+  ClampForces f;
+  const Vec3 b = xq - xp;
+  const double L = b.norm();
+  f.k = 8 * EI / (L * L * L);
+  const Vec3 nrm = t.cross(b);
+  const double nn = nrm.norm();
+  if (nn <= 0 || L <= 0) return f;  // along the clamp (or degenerate): no moment
+  const double M = 2 * EI * (nn / L) / L;
+  f.fq = (M / L) * b.cross(nrm).normalized();
+  return f;
+}
+
 // Eq. 3.47 and 3.49 bound each direction of a beam end by its own diagonal
 // stiffness (12 EI / L^3 for translation, 4 EI / L for rotation). Coupled,
 // the bending modes of a beam with those lumped masses reach

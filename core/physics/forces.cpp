@@ -184,6 +184,17 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
     T[b.i] += e.ta;
     T[b.j] += e.tb;
   }
+  accumulate_couples(x, F);  // moments on 3-DOF particles (couples.cpp)
+  for (Dart d : model_.clamp_darts.raw()) {  // clamped 3-DOF beam ends (Model::set_clamp)
+    if (!model_.clamp_acts(d)) continue;
+    const ParticleId p = model_.dart_particle[d], q = model_.dart_particle[model_.map.alpha(0, d)];
+    if (!(P.active[p] & P.active[q])) continue;  // dormant, like an element touching a passive particle
+    const ClampForces f = clamp_forces(model_.clamp[d], model_.blocks[model_.dart_block[d]].section.EI, x[p], x[q]);
+    F[q] += f.fq;
+    F[p] -= f.fq;
+    S[p] += f.k;
+    S[q] += f.k;
+  }
   if (!model_.joints.items.empty()) accumulate_joint_forces(x, F, S);
   if (!model_.goals.empty()) accumulate_goal_forces(x, F, S);
   if (!model_.csts.items.empty()) accumulate_cst_forces(x, F, S);

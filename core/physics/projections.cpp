@@ -47,6 +47,14 @@ void accumulate_projections(const Model& m, const Vec3* x, const Quat* q, double
     add(s, h.k, f.kb, f.fk);
     add(s, h.j, f.ka + f.kb, -(f.fi + f.fk));
   }
+  for (Dart d : m.clamp_darts.raw()) {  // clamped 3-DOF beam ends
+    if (!m.clamp_acts(d)) continue;
+    const ParticleId p = m.dart_particle[d], q = m.dart_particle[m.map.alpha(0, d)];
+    if (!(active[p] & active[q])) continue;
+    const ClampForces f = clamp_forces(m.clamp[d], m.blocks[m.dart_block[d]].section.EI, x[p], x[q]);
+    add(s, q, f.k, f.fq);
+    add(s, p, f.k, -f.fq);
+  }
   for (const Beam6* bp = m.beam6s.awake_begin(); bp != m.beam6s.awake_end(); ++bp) {
     const Beam6& b = *bp;
     const Beam6Ends e = beam6_ends(b, x, q, gf);

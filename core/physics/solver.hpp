@@ -187,6 +187,16 @@ class Solver {
   void accumulate_joint_forces(const Vec3* x, Vec3* F, double* S) const;  // joints.cpp
   void accumulate_goal_forces(const Vec3* x, Vec3* F, double* S) const;   // goal_forces.cpp
   void accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const;    // cst_forces.cpp
+  // couples.cpp: external moments on particles without rotations (3-DOF
+  // beams) as force couples across their beam segments, at positions x;
+  // scale multiplies each force (dt^2 / m and the free axes: add_couples_to_x0).
+  struct Couple {
+    ParticleId p, q;  // the moment's particle and the segment's other end
+    double share;     // the part of p's moment this segment carries
+  };
+  const std::vector<Couple>& couples() const;  // derived again when the model or a moment changed
+  void accumulate_couples(const Vec3* x, Vec3* F) const;
+  void add_couples_to_x0(double dt);  // implicit integrators: into x0_
   void size_scratch();
   // runaway.cpp: every kRunawayCheckEvery steps, one pass over the positions
   // stops (NumericalError naming the particle) a model whose extent grew a
@@ -264,6 +274,8 @@ class Solver {
   std::vector<Vec3> x0_, r0_;        // implicit: x0 of eq. 3.57, and its rotation vector from the frame
   std::shared_ptr<ProjectiveSystem> projective_;  // projective.hpp, built on first use
   mutable BarChunks bar_chunks_;
+  mutable std::vector<Couple> couples_;
+  mutable std::pair<std::uint64_t, std::uint64_t> couples_at_{~0ull, ~0ull};  // model revision, moment revision
   std::unique_ptr<Workers> workers_;
   // Per chunk: what a pass reduces, padded so threads do not share a line.
   struct alignas(64) ChunkSums {

@@ -58,6 +58,7 @@ void Solver::start_implicit_step(double dt) {
     x0_[p] = P.position[p] + inertial + ((dt * dt / mass_[p]) * external).cwiseProduct(free);
     xs_[p] = P.position[p] + inertial;  // the first guess follows the momentum
   }
+  add_couples_to_x0(dt);  // moments on 3-DOF particles, at the step's start (couples.cpp)
   for (ParticleId p : P.rotational.raw()) {
     qs_[p] = P.orientation[p];
     if (!active[p]) continue;

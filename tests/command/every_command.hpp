@@ -87,6 +87,13 @@ inline void apply_every_command(Recorded& r, const std::filesystem::path& base) 
   r.run("formulation", six);
   r.run("orientation", {id(q), num(1), num(0), num(0), num(0.1)});
   r.run("torque", {id(q), vec(0, 0, 0.5)});
+  // A beam curved at rest, clamped at both ends, one released.
+  const std::uint32_t k0 = r.particle(0, -3, 0), k1 = r.particle(1, -3, 0.2), k2 = r.particle(2, -3, 0);
+  const std::uint32_t bent = r.run("beam", join(join({id(0)}, section(1e4, 10)), {ids({k0, k1, k2})})).ids[0];
+  r.run("rest_shape", {id(bent), word("current")});
+  r.run("clamp", {id(k0), id(bent), vec(0, 0, 0)});
+  r.run("clamp", {id(k2), id(bent), vec(-1, 0, 0)});
+  r.run("unclamp", {id(k2), id(bent)});
   // A beam from a particle, merged onto a cable's end, exploded, detached.
   const std::uint32_t c0 = r.particle(0, 3, 0), c1 = r.particle(1, 3, 0);
   const std::uint32_t cable = r.run("cable", join({id(c0), id(c1)}, join(section(1e3, 0), {num(0)}))).ids[0];
