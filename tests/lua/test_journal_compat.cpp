@@ -2,6 +2,10 @@
 // 3b364af by tests/lua/journals/gen_*.lua) replay bit for bit: the model they
 // rebuild is the one the scene ended with (v1-*.xml, read and written again
 // so that later additions to the model database's format do not matter).
+// v1-beams.xml was replayed again when a moment on a particle without
+// rotations began to act (issue 12: as couples across its 3-DOF beam
+// segments, where it used to be ignored): its beam keeps m:torque after
+// switching to 3 DOF, and only that beam's particles moved.
 #include <doctest/doctest.h>
 
 #include <filesystem>

@@ -116,7 +116,7 @@ TEST_CASE("rest shape: a ring curved at rest under a diametral load within 1% of
     validate::SqueezedRing ring(n);
     CHECK(ring.m.check() == "");
     Solver solver(ring.m);
-    const RunResult r = solver.run(1e-10, 2'000'000);
+    const RunResult r = solver.run(1e-9, 2'000'000);
     REQUIRE(r.converged);
     MESSAGE("squeezed ring, " << n << " segments: shortening " << ring.shortening() << " m vs "
                               << validate::SqueezedRing::exact_shortening(ring.P) << " m; error " << ring.error()

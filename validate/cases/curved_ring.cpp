@@ -13,7 +13,7 @@ Outcome run_ring(const Setting& setting) {
   SqueezedRing ring(setting.segments);
   Solver solver(ring.m);
   solver.settings = setting.solver;
-  Outcome out = relax(solver, 1e-10, 2'000'000);  // 1e-7 of P
+  Outcome out = relax(solver, 1e-9, 2'000'000);  // 1e-6 of P
   out.error = ring.error();
   return out;
 }
