@@ -1,5 +1,6 @@
 #pragma once
-// Clamps of 3-DOF beam ends from Lua: m:clamp, m:unclamp, m:clamped
+// Clamps of 3-DOF beam ends from Lua: m:clamp (an optional direction) and
+// m:clamped; m:unclamp is the command's own binding
 // (docs/lua-api.md, "Clamps").
 #include <lua.hpp>
 

@@ -84,10 +84,10 @@ assert(m:count().particles == 0)                    -- nothing made
 local b = m:beam{ points = pts, EA = 1, EI = 1 }
 local ps = m:particles(b)
 assert(m:rest_shape(b) == "straight")
-fails("rest_shape: the shape must be", m.rest_shape, b, "bent")
+fails("rest_shape: argument 3: must be one of \"straight\", \"current\", got \"bent\"", m.rest_shape, b, "bent")
 local lone = m:particle{ 5, 5, 5 }
 local c = m:cable(lone, ps[1], { EA = 10 })
-fails("rest_shape: argument 2: is a cable", m.rest_shape, c, "current")
+fails("rest_shape: block %d+ is a cable; only beams have a rest shape", m.rest_shape, c, "current")
 fails("torque: particle %d+ is in no beam", m.torque, lone, { 0, 0, 1 })
 m:torque(lone, { 0, 0, 0 })                         -- clearing is always fine
 fails("clamp: particle %d+ is not an end of beam", m.clamp, ps[2], b)
