@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "lua_args.hpp"
+#include "query/member_forces.hpp"
 #include "lua_commands.hpp"
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
@@ -66,7 +67,8 @@ int l_summary(lua_State* L) {
   double beam_length = 0, max_strain = 0, min_radius = std::numeric_limits<double>::infinity();
   for (const Bar& b : m.bars.items) {
     const double L = (x[b.j] - x[b.i]).norm();
-    max_strain = std::max(max_strain, std::abs(L - b.rest_length) / b.rest_length);
+    const bool slack = b.tension_only && L < b.rest_length;  // a slack cable carries nothing: no strain to report
+    if (!slack) max_strain = std::max(max_strain, std::abs(L - b.rest_length) / b.rest_length);
     if (m.blocks[m.dart_block[b.dart]].kind == BlockKind::Beam) beam_length += L;
   }
   for (const Hinge& h : m.hinges.items) {
@@ -87,6 +89,47 @@ int l_summary(lua_State* L) {
   set("min_bending_radius", min_radius);
   set("max_strain", max_strain);
   set("steps", double(s.solver.steps()));
+  return 1;
+}
+
+// m:forces(block) -> {segments = {{a =, b =, axial =, strain =, slack =}, ...},
+// vertices = {{particle =, curvature =, moment =}, ...}}: what the block
+// carries now (query/member_forces.hpp), in path order.
+int l_forces(lua_State* L) {
+  const char* fn = "forces";
+  Scene& s = check_scene(L, fn);
+  const BlockId b = check_block(L, 2, s, fn);
+  if (s.model.blocks[b].kind == BlockKind::Beam && s.model.blocks[b].dofs == 6)
+    arg_error(fn, 2, "a 6-DOF beam's forces are not available yet (switch it to 3 DOF: m:formulation(beam, 3))");
+  const MemberForces f = member_forces(s.model, b);
+  auto number = [&](const char* key, double x) { lua_pushnumber(L, x), lua_setfield(L, -2, key); };
+  lua_createtable(L, 0, 2);
+  lua_createtable(L, int(f.segments.size()), 0);
+  for (std::size_t k = 0; k < f.segments.size(); ++k) {
+    const SegmentForce& e = f.segments[k];
+    lua_createtable(L, 0, 5);
+    push_particle(L, s, e.a);
+    lua_setfield(L, -2, "a");
+    push_particle(L, s, e.b);
+    lua_setfield(L, -2, "b");
+    number("axial", e.axial);
+    number("strain", e.strain);
+    lua_pushboolean(L, e.slack);
+    lua_setfield(L, -2, "slack");
+    lua_rawseti(L, -2, lua_Integer(k + 1));
+  }
+  lua_setfield(L, -2, "segments");
+  lua_createtable(L, int(f.vertices.size()), 0);
+  for (std::size_t k = 0; k < f.vertices.size(); ++k) {
+    const VertexMoment& v = f.vertices[k];
+    lua_createtable(L, 0, 3);
+    push_particle(L, s, v.p);
+    lua_setfield(L, -2, "particle");
+    number("curvature", v.curvature);
+    number("moment", v.moment);
+    lua_rawseti(L, -2, lua_Integer(k + 1));
+  }
+  lua_setfield(L, -2, "vertices");
   return 1;
 }
 
@@ -142,6 +185,7 @@ void add_query_methods(lua_State* L) {
   set_fn<l_neighbours>(L, "neighbours");
   set_fn<l_references>(L, "references");
   set_fn<l_summary>(L, "summary");
+  set_fn<l_forces>(L, "forces");
   set_fn<l_joint>(L, "joint");
   set_fn<l_joint_angle>(L, "joint_angle");
 }

@@ -26,16 +26,18 @@ local beam = m:beam{ points = points, E = rod.E, A = rod.A, I = rod.I }
 local ps = m:particles(beam)
 local left, right = ps[1], ps[#ps]
 
-m:cable(left, right, { EA = 1e5, rest_length = span })
+local string_ = m:cable(left, right, { EA = 1e5, rest_length = span })
 m:lock(left, "xyz")
 m:lock(right, "yz")
 for _, p in ipairs(ps) do m:lock(p, "y") end
 
 local r = m:run{ tolerance = 1e-4, max_steps = 200000 }
 local rise = m:position(ps[n // 2 + 1])[3]
+local tension = m:forces(string_).segments[1].axial
 local stretch = m:position(right)[1] - m:position(left)[1] - span
 print(string.format("coarse: %d steps, residual %.2e N, rise %.4f m, cable tension %.1f N",
-  r.steps, r.residual, rise, 1e5 * stretch / span))
+  r.steps, r.residual, rise, tension))
+assert(math.abs(tension - 1e5 * stretch / span) < 1e-9 * tension, "m:forces: the string's tension is EA * strain")
 assert(r.converged and rise > 1.5, "the bow did not reach equilibrium")
 
 -- Refine: one particle between every consecutive pair (rule 13), keep running.
