@@ -130,6 +130,27 @@ void declare_members(std::vector<Command>& out) {
                    t.model.remove_clamp(particle(a, 0), block(a, 1));
                    return nothing();
                  }});
+  out.push_back({"connection",
+                 "how two beams sharing a particle are connected there: pinned (no moment) or rigid (keeps its built "
+                 "angle, carries moment)",
+                 Effect::Topology,
+                 {{"particle", Type::Particle, "the shared particle"},
+                  {"a", Type::Block, "a beam at it"},
+                  {"b", Type::Block, "another beam at it (a: the beam's two ends)"},
+                  {"kind", Type::Word, "", {}, {"rigid", "pinned"}}},
+                 Returns::Nothing,
+                 [](Target& t, Args& a) {
+                   JointKind k;
+                   parse_joint_kind(a[3].word, k);
+                   t.model.set_joint(particle(a, 0), block(a, 1), block(a, 2), k);
+                   return nothing();
+                 },
+                 3, Returns::Word, [](Target& t, const Args& a) {
+                   Result r;
+                   r.kind = Returns::Word;
+                   r.word = joint_kind_name(t.model.joint_kind(particle(a, 0), block(a, 1), block(a, 2)));
+                   return r;
+                 }});
   out.push_back({"torque",
                  "an external moment on a particle [N m]: on a 6-DOF beam a torque, on a 3-DOF beam force couples across "
                  "its segments",

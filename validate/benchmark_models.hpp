@@ -3,7 +3,10 @@
 // (validate/cases/) and the doctest suites, so a case and its test cannot
 // drift apart: the pin-ended elastica, the hanging chain, the straight
 // cantilever, Bathe & Bolourchi's 45-degree bend and the prestressed ring of
-// thesis 5.4.1.2.
+// thesis 5.4.1.2, and the frames
+// whose limit loads test joints (Lee's frame, Williams' toggle).
+#include <cstdint>
+#include <functional>
 #include <numbers>
 #include <vector>
 
@@ -175,6 +178,68 @@ struct PrestressedRing {
   PrestressedRing(int n, int dofs);
   double drop(int node_number) const;  // below the start plane z = 0 [m], node 1..4
   double error() const;                // the larger of nodes 1 and 3
+};
+
+// The limit load of a structure under displacement control: `set` prescribes
+// the displacement v of the loaded particle, `load` reads the force that
+// holds it there. v grows by dv from 0, each state relaxed (to `tolerance`)
+// from the last, until the load falls; then parabolas through three
+// equilibria around the highest, their spacing quartered each time
+// (`refinements` times), place the peak. Its load and v, and the work spent.
+struct LimitPoint {
+  double load = 0, displacement = 0;
+  std::uint64_t steps = 0, force_evaluations = 0, relaxations = 0;
+  double wall_ms = 0;
+  bool converged = true;
+};
+LimitPoint find_limit(Solver& s, const std::function<void(double)>& set, const std::function<double()>& load,
+                      double dv, double tolerance, std::uint64_t max_steps, int refinements = 3);
+
+// Lee's frame (Lee, Manuel & Rossow 1968; the classic snap-through frame of
+// Schweizerhof & Wriggers 1986, Simo et al.): a column of length L = 120 in
+// from a pinned base at the origin up to the corner (0, L), and a beam of
+// the same length from the corner to a pinned support at (L, L); E = 720
+// kip/in^2, A = 6 in^2, I = 2 in^4 (EA = 4320 kip, EI = 1440 kip in^2; units
+// in and kip). The corner is rigid (Model::set_joint Rigid with 3 DOF; 6-DOF
+// beams share its frame). A load P down at 24 in from the corner on the
+// beam, under displacement control: the limit load PL^2/EI = 18.56
+// (kReference). n segments per member, a multiple of 5 (so a particle sits
+// at the load); in the plane z = 0 (held in z; 6 DOF: rotations only about
+// z).
+struct LeeFrame {
+  static constexpr double L = 120, EI = 1440, EA = 4320, kReference = 18.56;
+  Model m;
+  std::vector<ParticleId> column, girder;
+  BlockId column_beam, girder_beam;
+  ParticleId corner, loaded;
+  LeeFrame(int n, int dofs, JointKind joint = JointKind::Rigid);
+  void set_drop(double v);                 // the loaded particle held v below where it started [in]
+  double load(const Solver& s) const;      // P [kip]: what holds it there
+  LimitPoint limit(Solver& s);             // under displacement control
+  static double error(const LimitPoint& p) { return std::abs(p.load * L * L / EI / kReference - 1); }
+};
+
+// Williams' toggle (Williams 1964): two straight members from clamped
+// supports at x = 0 and x = 2a to the apex (a, h), a = 12.943 in, h = 0.386
+// in, rigidly joined there (Model::set_joint Rigid with 3 DOF; 6-DOF beams
+// share the apex's frame); E = 10.3e6 psi, a 0.753 x 0.243 in section (EA =
+// E b d, EI = E b d^3 / 12; units in and lb). A load P down at the apex,
+// under displacement control: the limit load 33.86 lb (kReference). 3 DOF:
+// the supports held and clamped along their members (Model::set_clamp); 6
+// DOF: fully locked. n segments per member; plane z = 0 as LeeFrame.
+struct WilliamsToggle {
+  static constexpr double a = 12.943, h = 0.386, E = 10.3e6, b = 0.753, d = 0.243, kReference = 33.86;
+  static constexpr double EA = E * b * d, EI = E * b * d * d * d / 12;
+  Model m;
+  std::vector<ParticleId> left, right;
+  BlockId left_beam, right_beam;
+  ParticleId apex;
+  int dofs;
+  WilliamsToggle(int n, int dofs, JointKind joint = JointKind::Rigid);
+  void set_drop(double v);
+  double load(const Solver& s) const;  // P [lb]
+  LimitPoint limit(Solver& s);
+  static double error(const LimitPoint& p) { return std::abs(p.load / kReference - 1); }
 };
 
 }  // namespace tendril::validate

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <numbers>
 #include <set>
 #include <utility>
 #include <vector>
@@ -471,6 +472,26 @@ std::string write_document(const Model& m, const SolverSettings& s) {
     }
     w.close();
   }
+  {  // rigid joints between beams (Model::set_joint), each as its two segments
+    std::vector<unsigned> block_id(m.blocks.size(), kNone);
+    unsigned next = 0;
+    for (BlockId b : m.live_blocks()) block_id[b] = next++;
+    bool open = false;
+    for (const RigidJoint& j : m.rigid_joints.raw()) {
+      if (!m.rigid_joined(j)) continue;
+      if (!open) w.open("connections");
+      open = true;
+      w.open("rigid");
+      w.attr("particle", dense[m.dart_particle[j.a]]);
+      w.attr("a", block_id[m.dart_block[j.a]]);
+      w.attr("a_to", dense[m.dart_particle[m.map.alpha(0, j.a)]]);
+      w.attr("b", block_id[m.dart_block[j.b]]);
+      w.attr("b_to", dense[m.dart_particle[m.map.alpha(0, j.b)]]);
+      w.attr("angle", j.angle);
+      w.close();
+    }
+    if (open) w.close();
+  }
   if (!m.goals.empty()) {  // goals of the constraint-based solvers, in index order
     w.open("goals");
     for (const Goal& g : m.goals) {
@@ -545,6 +566,12 @@ struct JointRecord {
   const tinyxml2::XMLElement* element = nullptr;
 };
 
+struct RigidRecord {  // file ids
+  unsigned particle = 0, a = 0, a_to = 0, b = 0, b_to = 0;
+  double angle = 0;
+  const tinyxml2::XMLElement* element = nullptr;
+};
+
 struct GoalRecord {
   Goal goal;  // particle ids as in the file
   const tinyxml2::XMLElement* element = nullptr;
@@ -557,6 +584,7 @@ struct Document {
   std::vector<BlockRecord> blocks;        // ascending id
   std::vector<JointRecord> joints;        // in file order
   std::vector<GoalRecord> goals;          // in file (index) order
+  std::vector<RigidRecord> rigid;         // in file order
 };
 
 class Attributes;
@@ -1064,7 +1092,7 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
   for (const tinyxml2::XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
     const std::string name = e->Name();
     if (name != "solver" && name != "gravity" && name != "particles" && name != "blocks" && name != "joints" &&
-        name != "goals")
+        name != "goals" && name != "connections")
       fail(e, "unknown element <" + clipped(name.c_str()) + "> inside <tendril>");
     if (auto it = sections.find(name); it != sections.end())
       fail(e, "<" + name + "> is already given on line " + std::to_string(it->second->GetLineNum()));
@@ -1099,6 +1127,25 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
         a.done();
         no_children(c);
         d.goals.push_back(r);
+      }
+    } else if (name == "connections") {
+      Attributes(*this, e).done();
+      for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+        if (std::strcmp(c->Name(), "rigid") != 0)
+          fail(c, "unknown element <" + clipped(c->Name()) + "> inside <connections>");
+        Attributes a(*this, c);
+        RigidRecord r;
+        r.element = c;
+        r.particle = a.index("particle");
+        r.a = a.index("a");
+        r.a_to = a.index("a_to");
+        r.b = a.index("b");
+        r.b_to = a.index("b_to");
+        r.angle = a.real("angle");
+        if (!(r.angle >= 0 && r.angle <= std::numbers::pi)) a.bad("angle", "must be within 0 .. pi");
+        a.done();
+        no_children(c);
+        d.rigid.push_back(r);
       }
     } else if (name == "joints") {
       Attributes(*this, e).done();
@@ -1169,6 +1216,7 @@ void build(const Reader& reader, const Document& d, Model& m) {
       reader.fail(r.element, e.what());
     }
   }
+  std::map<unsigned, BlockId> block_of;  // file id -> block
   for (const BlockRecord& r : d.blocks) {
     try {
       std::vector<ParticleId> ps;
@@ -1224,6 +1272,7 @@ void build(const Reader& reader, const Document& d, Model& m) {
           m.rest_length[x] = rest.at({std::min(a, c), std::max(a, c)});
         }
       }
+      block_of[r.id] = b;
       if (r.membrane.cst()) {  // the stored triangles and reference shapes
         std::vector<Model::Triangle> tris;
         for (const auto& t : r.triangles) tris.push_back({id_of.at(t[0]), id_of.at(t[1]), id_of.at(t[2])});
@@ -1250,6 +1299,25 @@ void build(const Reader& reader, const Document& d, Model& m) {
       m.add_joint(it->second, j.angle, j.stiffness);
     } catch (const ModelError& e) {
       reader.fail(j.element, e.what());
+    }
+  }
+  for (const RigidRecord& r : d.rigid) {
+    auto id = [&](const char* what, unsigned file_id, bool block) {
+      if (block) {
+        auto it = block_of.find(file_id);
+        if (it == block_of.end()) reader.fail(r.element, std::string("attribute '") + what + "': no block " + std::to_string(file_id));
+        return unsigned(it->second);
+      }
+      auto it = id_of.find(file_id);
+      if (it == id_of.end()) reader.fail(r.element, std::string("attribute '") + what + "': no particle " + std::to_string(file_id));
+      return unsigned(it->second);
+    };
+    const unsigned p = id("particle", r.particle, false), a = id("a", r.a, true), at = id("a_to", r.a_to, false);
+    const unsigned b = id("b", r.b, true), bt = id("b_to", r.b_to, false);
+    try {
+      m.set_rigid_joint(p, a, at, b, bt, r.angle);
+    } catch (const ModelError& e) {
+      reader.fail(r.element, e.what());
     }
   }
   for (const GoalRecord& r : d.goals) {

@@ -24,7 +24,8 @@ Model::Model()
       dart_cst(map.add_column<ElementIndex>(kNone)),
       merge_origin(map.add_column<MergeOrigin>(MergeOrigin{})),
       rest_curvature(map.add_column<double>(0.0)),
-      clamp(map.add_column<Vec3>(Vec3::Zero())) {
+      clamp(map.add_column<Vec3>(Vec3::Zero())),
+      rigid_mark(map.add_column<std::uint32_t>(0)) {
   UndoLog* log = &map.undo_log();
   particles.attach(log);
   blocks.attach(log);
@@ -36,6 +37,7 @@ Model::Model()
   goals.attach(log);
   csts.attach(log);
   clamp_darts.attach(log);
+  rigid_joints.attach(log);
 }
 
 void Model::require_particle(ParticleId p, const char* what) const {

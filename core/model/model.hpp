@@ -25,6 +25,24 @@ enum class RestShape : std::uint8_t { Straight, Current };
 const char* rest_shape_name(RestShape r);  // "straight", "current"
 bool parse_rest_shape(const std::string& name, RestShape& out);
 
+// How two beams that share a particle are connected there (rigid_joints.cpp):
+// Pinned, no moment crosses (what 3-DOF beams sharing a particle always
+// were), or Rigid, the connection keeps its built angle and carries moment.
+enum class JointKind : std::uint8_t { Pinned, Rigid };
+const char* joint_kind_name(JointKind k);  // "pinned", "rigid"
+bool parse_joint_kind(const std::string& name, JointKind& out);  // also "pin"
+
+// A rigid joint of two 3-DOF beams at a shared particle (Model::set_joint):
+// the segments of darts a and b (their darts at the particle) keep the
+// included angle `angle`. mark_a, mark_b: the darts' rigid_mark when the
+// joint was made; a dart freed and reused gets another, so a joint whose
+// dart went is inert (no bookkeeping when darts go).
+struct RigidJoint {
+  Dart a = kNoDart, b = kNoDart;
+  std::uint32_t mark_a = 0, mark_b = 0;
+  double angle = 0;  // [rad], 0 .. pi
+};
+
 struct Block {
   BlockKind kind = BlockKind::Cable;
   bool closed = false;  // a beam ring
@@ -165,6 +183,37 @@ class Model {
   // Whether dart d carries a clamp that acts now (a live end dart of a
   // 3-DOF beam with a direction).
   bool clamp_acts(Dart d) const;
+
+  // --- joints between members (rigid_joints.cpp) ---------------------------
+  // Where beams a and b share particle p, their connection is pinned (the
+  // default: no moment crosses) or rigid: the segment of a and the segment
+  // of b at p keep their included angle (`angle` in 0 .. pi; negative: the
+  // angle they make now, as built) and carry moment across the joint like a
+  // hinge (physics/element_forces.hpp: rigid_joint_forces). A joint acts on
+  // a's end segment when p is an end of a, else on a's segment towards its
+  // neighbour with the smaller id (moment crosses either way; the beam
+  // carries it on); a == b joins the two ends of one beam that meet at p.
+  // 3-DOF beams: both must be 3 DOF to be made rigid; 6-DOF beams sharing a
+  // particle share its frame and are rigid there already (Pinned refused).
+  // A rigid joint is kept while a beam switches formulation (inert unless
+  // both are 3 DOF), moves with merges of its particle, and goes when its
+  // end segment does (rules 4, 5, 11, 18) or its darts part.
+  void set_joint(ParticleId p, BlockId a, BlockId b, JointKind kind, double angle = -1);
+  JointKind joint_kind(ParticleId p, BlockId a, BlockId b, double* angle = nullptr) const;
+  // Whether the joint acts now (both darts live and its own, at one particle,
+  // two 3-DOF beams), and its rotational stiffness: half of each end
+  // segment in series, 1 / (La / 2 EIa + Lb / 2 EIb) (rest lengths), the
+  // stiffness of a hinge at an interior vertex of one beam.
+  bool rigid_acts(const RigidJoint& j) const;
+  // Whether the joint is still made (its darts live, its own, at one
+  // particle), acting or not (a beam switched to 6 DOF): what is saved.
+  bool rigid_joined(const RigidJoint& j) const;
+  // The model database: a rigid joint of the segments p -> a_to of beam a
+  // and p -> b_to of beam b, at `angle`, as saved.
+  void set_rigid_joint(ParticleId p, BlockId a, ParticleId a_to, BlockId b, ParticleId b_to, double angle);
+  double rigid_stiffness(const RigidJoint& j) const;
+  // Every rigid joint made since (rigid_acts tells which still act).
+  LoggedVector<RigidJoint> rigid_joints;
 
   // --- patches: a quad grid built by hand until meshing lands -------------
   // grid[r * cols + c] are existing particles; quads are sewn by alpha2 and
@@ -328,6 +377,9 @@ class Model {
   // (clamp_acts tells which still are): what the solver walks.
   DartColumn<Vec3>& clamp;
   LoggedVector<Dart> clamp_darts;
+  // Per dart in a rigid joint: a stamp no other dart had (RigidJoint), 0 when
+  // in none.
+  DartColumn<std::uint32_t>& rigid_mark;
 
   void require_particle(ParticleId p, const char* what) const;
   void require_block(BlockId b, const char* what) const;
@@ -406,6 +458,14 @@ class Model {
   void delete_component(BlockId b);
   Vec3 pos(Dart d) const { return particles.position[dart_particle[d]]; }
   std::size_t live_blocks_ = 0;
+  std::uint32_t rigid_stamp_ = 0;  // the last rigid_mark given (never reused)
+  // rigid_joints.cpp: the dart of beam b a joint at p acts on (`skip`: the
+  // one already taken when both are of b), the included angle of two
+  // darts' segments now, and the live joint of two darts (else size()).
+  Dart joint_dart(ParticleId p, BlockId b, Dart skip, const char* fn) const;
+  double joint_angle_now(Dart a, Dart b) const;
+  std::size_t find_rigid(Dart a, Dart b) const;
+  void make_rigid(Dart a, Dart b, double angle);  // or sets the angle of the joint they make
   LoggedVector<BlockId> free_blocks_;
 };
 

@@ -60,6 +60,40 @@ inline ClampForces clamp_forces(const Vec3& t, double EI, const Vec3& xp, const 
   return f;
 }
 
+// Rigid joint of two 3-DOF beams at a shared particle p (Model::set_joint):
+// the end segments p -> a and p -> b keep their included angle theta0, in
+// the plane they span. theta = atan2(|u x v|, u . v) with u = xa - xp,
+// v = xb - xp, exact at any angle (the hinge's 2 sin(alpha) / Lc has no
+// stiffness at a right angle); energy k (theta - theta0)^2 / 2, so the
+// moment M = k (theta - theta0) acts as the shears M / |u| on a and M / |v|
+// on b, normal to their segments in that plane, and p takes the sum
+// reversed: a couple only, like a hinge across the joint. k is the
+// rotational stiffness (Model::rigid_stiffness). ka, kb: 4 k / L^2 of each
+// segment, the hinge's 4 EI / L^3 (eq. 3.43). Collinear segments (theta 0
+// or pi) span no plane: no force (the joint then sits at its rest angle or
+// at a fold a 3-DOF joint cannot orient).
+struct RigidJointForces {
+  Vec3 fa = Vec3::Zero(), fb = Vec3::Zero();
+  double ka = 0, kb = 0;
+};
+
+inline RigidJointForces rigid_joint_forces(double k, double theta0, const Vec3& xp, const Vec3& xa, const Vec3& xb) {
+  RigidJointForces f;
+  const Vec3 u = xa - xp, v = xb - xp;
+  const double lu = u.norm(), lv = v.norm();
+  if (!(lu > 0) || !(lv > 0)) return f;
+  f.ka = 4 * k / (lu * lu);
+  f.kb = 4 * k / (lv * lv);
+  const Vec3 n = u.cross(v);
+  const double s = n.norm();
+  if (!(s > 0)) return f;
+  const double M = k * (std::atan2(s, u.dot(v)) - theta0);
+  const Vec3 nh = n / s;
+  f.fa = (M / lu) * nh.cross(u / lu);   // towards b when opened beyond theta0
+  f.fb = (-M / lv) * nh.cross(v / lv);  // towards a
+  return f;
+}
+
 // Eq. 3.47 and 3.49 bound each direction of a beam end by its own diagonal
 // stiffness (12 EI / L^3 for translation, 4 EI / L for rotation). Coupled,
 // the bending modes of a beam with those lumped masses reach

@@ -195,6 +195,19 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
     S[p] += f.k;
     S[q] += f.k;
   }
+  for (const RigidJoint& j : model_.rigid_joints.raw()) {  // rigid joints of 3-DOF beams (Model::set_joint)
+    if (!model_.rigid_acts(j)) continue;
+    const ParticleId p = model_.dart_particle[j.a];
+    const ParticleId a = model_.dart_particle[model_.map.alpha(0, j.a)], b = model_.dart_particle[model_.map.alpha(0, j.b)];
+    if (!(P.active[p] & P.active[a] & P.active[b])) continue;  // dormant, like an element touching a passive particle
+    const RigidJointForces f = rigid_joint_forces(model_.rigid_stiffness(j), j.angle, x[p], x[a], x[b]);
+    F[a] += f.fa;
+    F[b] += f.fb;
+    F[p] -= f.fa + f.fb;
+    S[a] += f.ka;
+    S[b] += f.kb;
+    S[p] += f.ka + f.kb;
+  }
   if (!model_.joints.items.empty()) accumulate_joint_forces(x, F, S);
   if (!model_.goals.empty()) accumulate_goal_forces(x, F, S);
   if (!model_.csts.items.empty()) accumulate_cst_forces(x, F, S);

@@ -55,6 +55,16 @@ void accumulate_projections(const Model& m, const Vec3* x, const Quat* q, double
     add(s, q, f.k, f.fq);
     add(s, p, f.k, -f.fq);
   }
+  for (const RigidJoint& j : m.rigid_joints.raw()) {  // rigid joints of 3-DOF beams
+    if (!m.rigid_acts(j)) continue;
+    const ParticleId p = m.dart_particle[j.a];
+    const ParticleId a = m.dart_particle[m.map.alpha(0, j.a)], b = m.dart_particle[m.map.alpha(0, j.b)];
+    if (!(active[p] & active[a] & active[b])) continue;
+    const RigidJointForces f = rigid_joint_forces(m.rigid_stiffness(j), j.angle, x[p], x[a], x[b]);
+    add(s, a, f.ka, f.fa);
+    add(s, b, f.kb, f.fb);
+    add(s, p, f.ka + f.kb, -(f.fa + f.fb));
+  }
   for (const Beam6* bp = m.beam6s.awake_begin(); bp != m.beam6s.awake_end(); ++bp) {
     const Beam6& b = *bp;
     const Beam6Ends e = beam6_ends(b, x, q, gf);

@@ -41,16 +41,34 @@ define("delete_particle", "rule 2: delete an isolated particle",
   function(m, p) return state_is(m, p, "isolated") end,
   function(m, p) m:delete_particle(p) end)
 
+-- joint: "rigid" makes every two beams meeting at the merged particle a
+-- rigid connection (m:connection) keeping the angle they make; "pinned"
+-- (the default) leaves them pinned.
 define("merge", "rule 3: merge particles",
-  function(m, ps)
+  function(m, ps, joint)
     if #ps < 2 then return false, "needs at least two particles" end
+    if joint ~= nil and joint ~= "rigid" and joint ~= "pinned" then
+      return false, "the joint must be \"rigid\" or \"pinned\""
+    end
     for _, p in ipairs(ps) do
       local ok, why = state_is(m, p, "simple", "shared", "lock", "full-lock")
       if not ok then return false, why end
     end
     return true
   end,
-  function(m, ps) return m:merge(ps) end)
+  function(m, ps, joint)
+    local p = m:merge(ps)
+    if joint == "rigid" then
+      local beams = {}
+      for _, b in ipairs(m:blocks(p)) do
+        if m:kind(b) == "beam" then beams[#beams + 1] = b end
+      end
+      for i = 1, #beams do
+        for j = i + 1, #beams do m:connection(p, beams[i], beams[j], "rigid") end
+      end
+    end
+    return p
+  end)
 
 -- A particle is shared when it holds two or more references: blocks, or one
 -- block twice where a loop joins a beam to itself (m:references).

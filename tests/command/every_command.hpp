@@ -94,6 +94,13 @@ inline void apply_every_command(Recorded& r, const std::filesystem::path& base) 
   r.run("clamp", {id(k0), id(bent), vec(0, 0, 0)});
   r.run("clamp", {id(k2), id(bent), vec(-1, 0, 0)});
   r.run("unclamp", {id(k2), id(bent)});
+  // Two 3-DOF beams meeting at a corner, rigid there, then pinned again.
+  const std::uint32_t f0 = r.particle(5, 0, 0), f1 = r.particle(5, 1, 0), f2 = r.particle(6, 1, 0);
+  const std::uint32_t post = r.run("beam", join(join({id(0)}, section(1e4, 10)), {ids({f0, f1})})).ids[0];
+  const std::uint32_t lintel = r.run("beam", join(join({id(0)}, section(1e4, 10)), {ids({f1, f2})})).ids[0];
+  r.run("connection", {id(f1), id(post), id(lintel), word("rigid")});
+  r.run("connection", {id(f1), id(lintel), id(post), word("pinned")});
+  r.run("connection", {id(f1), id(post), id(lintel), word("rigid")});
   // A beam from a particle, merged onto a cable's end, exploded, detached.
   const std::uint32_t c0 = r.particle(0, 3, 0), c1 = r.particle(1, 3, 0);
   const std::uint32_t cable = r.run("cable", join({id(c0), id(c1)}, join(section(1e3, 0), {num(0)}))).ids[0];
