@@ -9,12 +9,6 @@ namespace tendril::command {
 
 namespace {
 
-std::string shown(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", x);
-  return buf;
-}
-
 // "must be > 0", "must be from 1 to 1000", ... or "" when there is no bound.
 std::string bounds(const Range& r, bool whole) {
   const bool low = std::isfinite(r.min), high = std::isfinite(r.max);
@@ -38,6 +32,12 @@ void check_particle(const Model& m, std::size_t k, std::uint64_t id) {
 }
 
 }  // namespace
+
+std::string shown(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
 
 void check_args(const Command& c, const Args& a, const Model& m) {
   if (a.size() != c.params.size())

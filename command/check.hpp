@@ -8,6 +8,9 @@ namespace tendril::command {
 
 void check_args(const Command& c, const Args& a, const Model& m);
 
+// A bound as the messages and the listing show it ("%g").
+std::string shown(double x);
+
 // "name: 'param' why" for an ArgumentError of c.
 std::string describe(const Command& c, const ArgumentError& e);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "command/check.hpp"
 #include "command/registry.hpp"
 
 namespace tendril::command {
@@ -40,12 +41,6 @@ const char* returns_name(Returns r) {
     case Returns::Word: return "a word";
   }
   return "?";
-}
-
-std::string shown(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", x);
-  return buf;
 }
 
 std::string range_text(const Param& p) {
