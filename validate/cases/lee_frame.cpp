@@ -3,28 +3,9 @@
 // horizontal member; its limit load PL^2/EI = 18.56 (Lee, Manuel & Rossow
 // 1968), found under displacement control (find_limit). 3 DOF: the corner
 // a rigid joint (Model::set_joint); 6 DOF: the corner's shared frame.
-#include "benchmark_models.hpp"
-#include "case.hpp"
+#include "limit_case.hpp"
 
 namespace tendril::validate {
-
-namespace {
-
-Outcome run_lee(const Setting& setting) {
-  LeeFrame f(setting.segments, setting.formulation == "beam-6dof" ? 6 : 3);
-  Solver solver(f.m);
-  solver.settings = setting.solver;
-  const LimitPoint p = f.limit(solver);
-  Outcome out;
-  out.steps = p.steps;
-  out.force_evaluations = p.force_evaluations;
-  out.wall_ms = p.wall_ms;
-  out.converged = p.converged;
-  out.error = LeeFrame::error(p);
-  return out;
-}
-
-}  // namespace
 
 Case lee_frame_case() {
   Case c;
@@ -38,7 +19,7 @@ Case lee_frame_case() {
   c.defaults.segments = 20;
   c.tolerance = 0.01;
   std::erase(c.integrators, Integrator::Midpoint);  // 10x the steps of the others
-  c.run = run_lee;
+  c.run = run_limit_case<LeeFrame>;
   return c;
 }
 

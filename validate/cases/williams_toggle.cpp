@@ -4,28 +4,9 @@
 // under displacement control (find_limit). 3 DOF: the apex a rigid joint
 // (Model::set_joint), the supports clamp hinges (Model::set_clamp); 6 DOF:
 // the apex's shared frame, the supports fully locked.
-#include "benchmark_models.hpp"
-#include "case.hpp"
+#include "limit_case.hpp"
 
 namespace tendril::validate {
-
-namespace {
-
-Outcome run_williams(const Setting& setting) {
-  WilliamsToggle t(setting.segments, setting.formulation == "beam-6dof" ? 6 : 3);
-  Solver solver(t.m);
-  solver.settings = setting.solver;
-  const LimitPoint p = t.limit(solver);
-  Outcome out;
-  out.steps = p.steps;
-  out.force_evaluations = p.force_evaluations;
-  out.wall_ms = p.wall_ms;
-  out.converged = p.converged;
-  out.error = WilliamsToggle::error(p);
-  return out;
-}
-
-}  // namespace
 
 Case williams_toggle_case() {
   Case c;
@@ -39,7 +20,7 @@ Case williams_toggle_case() {
   c.defaults.segments = 20;
   c.tolerance = 0.01;
   std::erase(c.integrators, Integrator::Midpoint);  // 10x the steps of the others
-  c.run = run_williams;
+  c.run = run_limit_case<WilliamsToggle>;
   return c;
 }
 
