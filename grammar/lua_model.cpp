@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "io/model_xml.hpp"
+#include "io/ccx.hpp"
 #include "io/obj.hpp"
 #include "command/registry.hpp"
 #include "lua_args.hpp"
@@ -604,6 +605,14 @@ int l_save_obj(lua_State* L) {
   return 0;
 }
 
+// m:export_ccx(path): a CalculiX input deck of the current state (io/ccx.hpp).
+int l_export_ccx(lua_State* L) {
+  Scene& s = check_scene(L, "export_ccx");
+  if (lua_type(L, 2) != LUA_TSTRING) arg_error("export_ccx", 2, "expected a file name");
+  save_ccx(s.model, lua_tostring(L, 2));
+  return 0;
+}
+
 // --- rotation: 6-DOF beams ---------------------------------------------------------
 
 // m:formulation(beam) -> 3 or 6; m:formulation(beam, 3 | 6) switches it.
@@ -673,6 +682,7 @@ void register_model_meta(lua_State* L) {
   set_fn<l_check>(L, "check");
   set_fn<l_save>(L, "save");
   set_fn<l_save_obj>(L, "save_obj");
+  set_fn<l_export_ccx>(L, "export_ccx");
   set_fn<l_formulation>(L, "formulation");
   set_fn<l_orientation>(L, "orientation");
   add_rule_methods(L);
