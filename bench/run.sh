@@ -3,6 +3,7 @@
 #
 #   bench/run.sh [throughput|rule_cost|meshing|constraint_solvers] [options...]
 #   bench/run.sh sweep [RUNS]
+#   bench/run.sh fe [--param case=strip|ring|net] (tendril against CalculiX, bench/fe/fe.lua)
 #   bench/run.sh studio [SIZES [SECONDS]]   (e.g. 2000,20000,100000 5: the default)
 #
 # Without a selector every benchmark runs and the options go to the first two
@@ -27,6 +28,21 @@ if [[ "${1:-}" == studio ]]; then
   cmake --build "$build" --target tendril
   (cd "$root/web" && npm run --silent build)
   exec node --experimental-websocket --no-warnings "$root/bench/studio_bench.mjs" "$@"
+fi
+# tendril against CalculiX (issue 11): the same models in both, every node
+# compared; needs ccx (Debian calculix-ccx), installed here when missing.
+if [[ "${1:-}" == fe ]]; then
+  shift
+  if ! command -v ccx >/dev/null; then
+    echo "bench/run.sh: installing calculix-ccx for the FE comparison" >&2
+    sudo=()
+    if [[ $(id -u) -ne 0 ]]; then sudo=(sudo); fi
+    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y calculix-ccx >/dev/null ||
+      { "${sudo[@]}" apt-get update >/dev/null && DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y calculix-ccx >/dev/null; }
+  fi
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$build" --target tendril
+  exec "$build/tendril" run "$root/bench/fe/fe.lua" --out "$build/bench-fe" --quiet "$@"
 fi
 case "${1:-}" in
   sweep)

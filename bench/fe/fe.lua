@@ -3,7 +3,8 @@
 -- dynamic relaxation and by ccx's Newton solver (NLGEOM); every node's
 -- deviation as a percentage of the span. docs/calculix.md explains the deck.
 --   tendril run bench/fe/fe.lua --out DIR [--param small=1]
--- small = 1: the smallest case only, with the bounds asserted (the test suite).
+-- small = 1: the smallest case only, with the bounds asserted (the test suite);
+-- case = strip, ring or net: that case alone; FE_DEBUG=1: every node printed.
 local small = tendril.param("small", 0) == 1
 local P_strip = tendril.param("P", 20)
 local only = tendril.param("case", "all")   -- strip, ring, net or all
