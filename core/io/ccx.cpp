@@ -75,6 +75,20 @@ struct Deck {
   int next_element = 1;
 };
 
+// Whether beam b turns anywhere now (a straight-at-rest beam then carries
+// bending that the deck cannot hold).
+bool bent(const Model& m, BlockId b) {
+  const std::vector<ParticleId> ps = m.particles_of(b);
+  const std::size_t n = ps.size();
+  const bool closed = m.blocks[b].closed;
+  for (std::size_t k = closed ? 0 : 1; k < (closed ? n : n - 1); ++k) {
+    const Vec3 a = m.particles.position[ps[k]] - m.particles.position[ps[(k + n - 1) % n]];
+    const Vec3 c = m.particles.position[ps[(k + 1) % n]] - m.particles.position[ps[k]];
+    if (a.cross(c).norm() > 1e-9 * a.norm() * c.norm()) return true;
+  }
+  return false;
+}
+
 // St Venant's torsion constant of a b x h rectangle over b h^3 (b >= h).
 double torsion_factor(double b, double h) {
   const double r = h / b;
@@ -115,7 +129,8 @@ std::string ccx_string(const Model& m) {
     for (auto& [blk, node] : taken)
       if (blk == b) return node;
     const bool six = m.blocks[b].dofs == 6;
-    for (auto& [blk, node] : taken) {
+    for (std::size_t k = 0; k < taken.size(); ++k) {
+      const auto [blk, node] = taken[k];  // a copy: push_back below moves the vector
       const bool other_six = m.blocks[blk].dofs == 6;
       if ((six && other_six) || rigid.count({std::min(b, blk), std::max(b, blk)})) {
         taken.push_back({b, node});
@@ -157,7 +172,7 @@ std::string ccx_string(const Model& m) {
                  "; clamped to [-0.95, 0.49]\n";
       nu = std::clamp(nu, -0.95, 0.49);
     }
-    if (blk.rest == RestShape::Straight)
+    if (blk.rest == RestShape::Straight && bent(m, b))
       d.notes += "** beam " + std::to_string(b) +
                  ": straight at rest in tendril; exported stress free in its current shape (its bending "
                  "prestress is not in the deck)\n";

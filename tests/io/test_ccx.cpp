@@ -118,3 +118,22 @@ TEST_CASE("ccx: the .dat reader takes the last block of displacements and names 
   CHECK(read_ccx_displacements(path).size() == 2u);
   CHECK_THROWS_AS(read_ccx_displacements("/nonexistent-dir/x.dat"), InputError);
 }
+
+TEST_CASE("ccx: 3-DOF beams meeting pinned get a node each, tied in x, y, z; rigid ones share it") {
+  for (const bool rigid : {false, true}) {
+    Model m;
+    const ParticleId apex = m.add_particle(Vec3(0, 0, 1));
+    const ParticleId a = m.add_particle(Vec3(-1, 0, 0)), b = m.add_particle(Vec3(1, 0, 0));
+    const ParticleId am = m.add_particle(Vec3(-0.5, 0, 0.5)), bm = m.add_particle(Vec3(0.5, 0, 0.5));
+    const BlockId A = m.add_beam({a, am, apex}, Section{1e6, 100, 0, 0});
+    const BlockId B = m.add_beam({b, bm, apex}, Section{1e6, 100, 0, 0});
+    if (rigid) m.set_joint(apex, A, B, JointKind::Rigid);
+    const std::string deck = ccx_string(m);
+    // Particles are nodes 1-5, then the nodes made in segment order: beam
+    // B's end at the apex is node 9 when pinned (its middle node 10), node 1
+    // when rigid (its middle node 9).
+    CHECK(has(deck, rigid ? "4, 5, 9, 1\n" : "4, 5, 10, 9\n"));
+    CHECK(has(deck, "*EQUATION\n2\n9, 1, 1., 1, 1, -1.\n2\n9, 2, 1., 1, 2, -1.\n2\n9, 3, 1., 1, 3, -1.\n") == !rigid);
+    CHECK(has(deck, "9, 0., 0., 1.\n") == !rigid);
+  }
+}
