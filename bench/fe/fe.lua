@@ -4,10 +4,10 @@
 -- deviation as a percentage of the span. docs/calculix.md explains the deck.
 --   tendril run bench/fe/fe.lua --out DIR [--param small=1]
 -- small = 1: the smallest case only, with the bounds asserted (the test suite);
--- case = strip, ring or net: that case alone; FE_DEBUG=1: every node printed.
+-- case = strip, ring, net or frame: that case alone; FE_DEBUG=1: every node printed.
 local small = tendril.param("small", 0) == 1
 local P_strip = tendril.param("P", 20)
-local only = tendril.param("case", "all")   -- strip, ring, net or all
+local only = tendril.param("case", "all")   -- strip, ring, net, frame or all
 local sigma_strip = tendril.param("sigma", 20)
 local mean_bound, max_bound = 0.5, 2.0   -- % of the span (issue 11)
 
@@ -165,8 +165,33 @@ local function net(m)
   return 1e-7, 2000000
 end
 
+-- (d) A portal frame of 6-DOF steel beams (4 x 3 m, EI = 200 kN m^2,
+-- 50 kg/m under gravity), feet clamped, braced by a prestressed cable that
+-- goes slack under a 5 kN sway load against it: tension-only in both.
+local function frame(m)
+  m:settings{ gravity = { 0, 0, -9.81 } }
+  local n = small and 4 or 8
+  local function line(from, a, b)
+    local ps = { from }
+    for i = 1, n do ps[#ps + 1] = m:particle{ a[1] + (b[1] - a[1]) * i / n, 0, a[3] + (b[3] - a[3]) * i / n } end
+    return ps
+  end
+  local foot = m:particle{ 0, 0, 0 }
+  local left = line(foot, { 0, 0, 0 }, { 0, 0, 3 })
+  local beam = line(left[#left], { 0, 0, 3 }, { 4, 0, 3 })
+  local right = line(beam[#beam], { 4, 0, 3 }, { 4, 0, 0 })
+  for _, ps in ipairs({ left, beam, right }) do
+    m:formulation(m:beam{ particles = ps, EA = 2e8, EI = 2e5, line_mass = 50 }, 6)
+  end
+  m:lock(foot, "full")
+  m:lock(right[#right], "full")
+  m:cable(foot, beam[#beam], { EA = 1e6, prestress = 100 })
+  m:load(left[#left], { -5000, 0, 0 })
+  return 1e-6, 2000000
+end
+
 local rows = {}
-local cases = { { "strip", 4.0, strip }, { "ring", 4.0, ring }, { "net", 3.0, net } }
+local cases = { { "strip", 4.0, strip }, { "ring", 4.0, ring }, { "net", 3.0, net }, { "frame", 4.0, frame } }
 for k, c in ipairs(cases) do
   if (only == "all" and (k == 1 or not small)) or only == c[1] then rows[#rows + 1] = compare(c[1], c[2], c[3]) end
 end
