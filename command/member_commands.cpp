@@ -174,6 +174,25 @@ void declare_members(std::vector<Command>& out) {
                  },
                  2, Returns::Number,
                  [](Target& t, const Args& a) { return number_result(t.model.edge_rest_length(particle(a, 0), particle(a, 1))); }});
+  out.push_back({"pressure",
+                 "a uniform pressure on a patch [Pa], a follower load along its faces' normals: towards `towards` "
+                 "when given, else outward; negative sucks",
+                 Effect::Setting,
+                 {{"patch", Type::Block, "a patch"},
+                  {"p", Type::Number, "the pressure [Pa]"},
+                  {"towards", Type::Vector, "the side it pushes (default or {0, 0, 0}: outward, away from the patch's centroid)",
+                   {}, {}, true}},
+                 Returns::Nothing,
+                 [](Target& t, Args& a) {
+                   if (!a[2].given) {  // outward; the journal line always carries the side
+                     a[2].vector = Vec3::Zero();
+                     a[2].given = true;
+                   }
+                   t.model.set_pressure(block(a, 0), a[1].number, a[2].vector);
+                   return nothing();
+                 },
+                 1, Returns::Number,
+                 [](Target& t, const Args& a) { return number_result(t.model.blocks[block(a, 0)].pressure); }});
   out.push_back({"joint", "a rotational joint where exactly two beams cross (thesis 6.5.2)", Effect::Setting,
                  {{"particle", Type::Particle, "the crossing"},
                   {"angle", Type::Number, "the target included angle [rad]"},

@@ -268,6 +268,16 @@ void write_membrane(Writer& w, const Membrane& mem) {
   w.attr("G", mem.G);
 }
 
+// A patch's pressure (attributes): nothing without one.
+void write_pressure(Writer& w, const Block& blk) {
+  if (blk.pressure == 0) return;
+  w.attr("pressure", blk.pressure);
+  if (blk.pressure_towards == Vec3::Zero()) return;
+  w.attr("towards_x", blk.pressure_towards.x());
+  w.attr("towards_y", blk.pressure_towards.y());
+  w.attr("towards_z", blk.pressure_towards.z());
+}
+
 // A CST patch's triangles (children), sorted by their file ids.
 void write_triangles(Writer& w, const Model& m, BlockId b, const std::vector<unsigned>& dense) {
   if (!m.blocks[b].membrane.cst()) return;
@@ -419,6 +429,8 @@ std::string write_document(const Model& m, const SolverSettings& s) {
           w.attr("id", id);
           write_section(w, blk.section);
           write_membrane(w, blk.membrane);
+        write_pressure(w, blk);
+          write_pressure(w, blk);
           for (const auto& q : list.quads) {
             w.open("quad");
             for (int k = 0; k < 4; ++k) w.attr(kQuadNames[k], q[k]);
@@ -441,6 +453,7 @@ std::string write_document(const Model& m, const SolverSettings& s) {
         w.attr("cols", unsigned(g.cols));
         write_section(w, blk.section);
         write_membrane(w, blk.membrane);
+        write_pressure(w, blk);
         for (ParticleId p : g.nodes) {
           w.open("node");
           w.attr("p", dense[p]);
@@ -555,6 +568,8 @@ struct BlockRecord {
   const tinyxml2::XMLElement* element = nullptr;
   // CST patches: the formulation, triangles (file ids) and their references.
   Membrane membrane;
+  double pressure = 0;  // patches: Model::set_pressure
+  Vec3 towards = Vec3::Zero();
   std::vector<std::array<unsigned, 3>> triangles;
   std::vector<CstReference> references;
   std::vector<const tinyxml2::XMLElement*> triangle_elements;
@@ -913,6 +928,8 @@ BlockRecord Reader::read_patch(const tinyxml2::XMLElement* e) const {
   b.element = e;
   b.id = a.index("id");
   b.membrane = a.membrane();
+  b.pressure = a.real("pressure", 0.0);
+  b.towards = Vec3(a.real("towards_x", 0.0), a.real("towards_y", 0.0), a.real("towards_z", 0.0));
   if (!e->Attribute("rows") && !e->Attribute("cols")) return read_quad_patch(e, a, b);
   unsigned rows = a.index("rows"), cols = a.index("cols");
   if (rows < 2 || rows > 1u << 15) a.bad("rows", "must be an integer from 2 to 32768");
@@ -1279,6 +1296,7 @@ void build(const Reader& reader, const Document& d, Model& m) {
         m.set_patch_formulation(b, r.membrane, tris,
                                 r.membrane.mode == Membrane::Analysis ? &r.references : nullptr);
       }
+      if (r.pressure != 0) m.set_pressure(b, r.pressure, r.towards);
     } catch (const ModelError& e) {
       reader.fail(r.element, e.what());
     }

@@ -52,6 +52,10 @@ struct Block {
   std::uint8_t dofs = 3;
   Section section;
   Membrane membrane;  // patches: bars or CST (patch_formulations.cpp)
+  // Patches: a uniform pressure [Pa] on the faces and the side it pushes
+  // towards (zero: outward), pressure.cpp.
+  double pressure = 0;
+  Vec3 pressure_towards = Vec3::Zero();
   Dart dart = kNoDart;  // any dart of the component
   std::size_t darts = 0;
   bool alive = false;
@@ -249,6 +253,20 @@ class Model {
   void set_patch_formulation(BlockId b, const Membrane& m, const std::vector<Triangle>& triangles = {},
                              const std::vector<CstReference>* reference = nullptr);
   const Membrane& patch_formulation(BlockId b) const;
+
+  // --- pressure on patches (pressure.cpp) -----------------------------------
+  // A uniform pressure p [Pa] on every quad of patch b, along its normal
+  // (a follower load: it turns with the faces). The quads are oriented
+  // alike over the patch, then as a whole: towards `towards` (the sum of
+  // the quads' area vectors has a positive component along it) when it is
+  // not zero, else outward (the area vectors point away from the patch's
+  // centroid: a cushion, a tube or a dome inflates); p > 0 pushes that
+  // way, p < 0 sucks. Where the measure is zero (a flat patch, outward) the
+  // quads' own order decides. Refused on a non-orientable patch.
+  void set_pressure(BlockId b, double p, const Vec3& towards = Vec3::Zero());
+  // The patch's quads, oriented as the pressure acts (corners in order, the
+  // normal of (c - a) x (d - b)); empty when the patch has no pressure.
+  std::vector<Quad> pressure_quads(BlockId b) const;
   // The CST triangles of a patch (empty in bars mode) and their references,
   // in dart order.
   std::vector<Triangle> patch_triangles(BlockId b, std::vector<CstReference>* reference = nullptr) const;

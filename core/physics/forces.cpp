@@ -211,6 +211,7 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
   if (!model_.joints.items.empty()) accumulate_joint_forces(x, F, S);
   if (!model_.goals.empty()) accumulate_goal_forces(x, F, S);
   if (!model_.csts.items.empty()) accumulate_cst_forces(x, F, S);
+  accumulate_pressure_forces(x, F, S);
 }
 
 }  // namespace tendril

@@ -123,7 +123,7 @@ bool Solver::fused_kick_drift_applies() const {
   return (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) && model_.hinges.awake == 0 &&
          model_.beam6s.awake == 0 && model_.joints.items.empty() && model_.goals.empty() &&
          model_.csts.items.empty() && model_.particles.rotational.empty() && couples().empty() &&
-         model_.clamp_darts.empty() && model_.rigid_joints.empty();
+         model_.clamp_darts.empty() && model_.rigid_joints.empty() && !pressure_acts();
 }
 
 // kick_drift for a model of bars alone, without a separate force pass: each

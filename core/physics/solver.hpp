@@ -187,6 +187,10 @@ class Solver {
   void accumulate_joint_forces(const Vec3* x, Vec3* F, double* S) const;  // joints.cpp
   void accumulate_goal_forces(const Vec3* x, Vec3* F, double* S) const;   // goal_forces.cpp
   void accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const;    // cst_forces.cpp
+  // Pressure on patches (pressure_forces.cpp); S may be null (the
+  // constraint solvers take it as an external force).
+  void accumulate_pressure_forces(const Vec3* x, Vec3* F, double* S) const;
+  bool pressure_acts() const;  // a patch under pressure (derives the quads when the model changed)
   // couples.cpp: external moments on particles without rotations (3-DOF
   // beams) as force couples across their beam segments, at positions x;
   // scale multiplies each force (dt^2 / m and the free axes: add_couples_to_x0).
@@ -269,7 +273,15 @@ class Solver {
   std::vector<Vec3> sum_r_, sum_w_;  // RK4's sums of L_R and K_R (eq. 3.22-3.24)
   // cst_forces.cpp: the form-finding pull on interior patch vertices and
   // their normals, gathered before projection (scratch, zero between calls).
-  mutable std::vector<Vec3> cst_pull_, cst_normal_;
+  mutable std::vector<Vec3> cst_pull_, cst_normal_, cst_smooth_;
+  // The oriented quads of every patch under pressure, with their pressure,
+  // derived again when the model's revision moves.
+  struct PressureQuad {
+    Model::Quad q;
+    double p;
+  };
+  mutable std::vector<PressureQuad> pressure_quads_;
+  mutable std::uint64_t pressure_revision_ = ~std::uint64_t(0);
   std::vector<double> cst_weight_;   // local step: the CST stiffnesses
   std::vector<Vec3> x0_, r0_;        // implicit: x0 of eq. 3.57, and its rotation vector from the frame
   std::shared_ptr<ProjectiveSystem> projective_;  // projective.hpp, built on first use

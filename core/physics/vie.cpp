@@ -101,6 +101,7 @@ void Solver::finish_implicit_step(double dt) {
 void Solver::local_step(const Vec3* x, const Quat* q) {
   accumulate_projections(model_, x, q, settings.geometric_factor, {Fs_.data(), Ss_.data(), Ts_.data(), Ks_.data()});
   ++evaluations_;
+  accumulate_pressure_forces(x, Fs_.data(), nullptr);  // an external force, evaluated where the particles are
   if (model_.csts.items.empty()) return;
   // CST membranes (cst_forces.cpp) project each corner by its force over
   // twice its eq. 3.40 stiffness, as a bar does.
