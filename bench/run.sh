@@ -4,6 +4,7 @@
 #   bench/run.sh [throughput|rule_cost|meshing|constraint_solvers] [options...]
 #   bench/run.sh sweep [RUNS]
 #   bench/run.sh fe [--param case=strip|ring|net] (tendril against CalculiX, bench/fe/fe.lua)
+#   bench/run.sh hybrids   (textile hybrids with every integrator, bench/hybrids.lua)
 #   bench/run.sh studio [SIZES [SECONDS]]   (e.g. 2000,20000,100000 5: the default)
 #
 # Without a selector every benchmark runs and the options go to the first two
@@ -28,6 +29,12 @@ if [[ "${1:-}" == studio ]]; then
   cmake --build "$build" --target tendril
   (cd "$root/web" && npm run --silent build)
   exec node --experimental-websocket --no-warnings "$root/bench/studio_bench.mjs" "$@"
+fi
+# Textile hybrids with every integrator: steps, time, shape (bench/hybrids.lua).
+if [[ "${1:-}" == hybrids ]]; then
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$build" --target tendril
+  exec "$build/tendril" run "$root/bench/hybrids.lua" --quiet
 fi
 # tendril against CalculiX (issue 11): the same models in both, every node
 # compared; needs ccx (Debian calculix-ccx), installed here when missing.

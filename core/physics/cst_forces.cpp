@@ -21,11 +21,20 @@
 // interior vertices of a patch would slide in the surface towards ever
 // smaller triangles (the mesh drift the thesis' G-strings prevent, fig.
 // 3.11). So an interior vertex takes only the component of its CST pull
-// along its normal (the sum of its triangles' area vectors); its position in
-// the surface stays where the patch put it, and the shape is the same.
-// Boundary vertices take the whole pull: it is what their edge cables,
-// beams or supports carry. Analysis has elastic in-plane stiffness and
-// takes the whole pull everywhere.
+// along its normal (the sum of its triangles' area vectors), and in the
+// surface it follows the G-strings: the warp and weft lines of the quads
+// (sides 1 and 2 of the triangles) pull it with one force density, the
+// mean of sigma_warp and sigma_weft [N/m] (one for both directions, so that
+// unequal stresses do not squash the quads), and it takes their component
+// in its tangent plane only. They move a vertex within the surface, never across
+// it, so the shape is that of the membrane; they keep the mesh as regular
+// as the boundary allows while the boundary moves (a bending-active arch
+// deflecting under the membrane) or the surface grows far from its start
+// (a minimal surface from a flat sheet), and they carry what a load has in
+// the surface, which a prescribed stress cannot. Boundary vertices take
+// the whole pull: it is what their edge cables, beams or supports carry.
+// Analysis has elastic in-plane stiffness and takes the whole pull
+// everywhere.
 //
 // A triangle whose area vanishes (collinear corners, twice its area below
 // 1e-10 times its longest side squared) has no plane and no normal: it
@@ -46,6 +55,7 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
   if (cst_pull_.size() != capacity) {  // grows with the particles, never per step
     cst_pull_.assign(capacity, Vec3::Zero());
     cst_normal_.assign(capacity, Vec3::Zero());
+    cst_smooth_.assign(capacity, Vec3::Zero());
   }
   bool gathered = false;
   for (const Cst* tp = model_.csts.awake_begin(); tp != model_.csts.awake_end(); ++tp) {  // awake only
@@ -64,6 +74,23 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
       elastic[2] = d * r.l1 * r.l1 / twice_area;
     }
     const Vec3 a = x[t.j] - x[t.i], b = x[t.k] - x[t.i], side3 = x[t.k] - x[t.j];
+    const std::uint8_t along_normal = analysis ? 0 : t.interior;
+    if (along_normal) {  // the G-strings: side 1 (i -> j) warp, side 2 (j -> k) weft
+      auto string = [&](ParticleId u, int cu, ParticleId v, int cv, const Vec3& uv, double q) {
+        if (along_normal >> cu & 1) {
+          cst_smooth_[u] += q * uv;
+          S[u] += q;
+        }
+        if (along_normal >> cv & 1) {
+          cst_smooth_[v] -= q * uv;
+          S[v] += q;
+        }
+      };
+      const double q = 0.5 * (m.sigma_warp + m.sigma_weft);
+      string(t.i, 0, t.j, 1, a, q);
+      string(t.j, 1, t.k, 2, side3, q);
+      gathered = true;
+    }
     const Vec3 n = a.cross(b);
     const double twice_area = n.norm();
     const double longest = std::max({a.squaredNorm(), b.squaredNorm(), side3.squaredNorm()});
@@ -91,7 +118,6 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
       return 0.5 * ((sx * u + tau * v) * e1 + (tau * u + sy * v) * e2);
     };
     const Vec3 fi = pull(side3), fj = pull(-b), fk = pull(a);
-    const std::uint8_t along_normal = analysis ? 0 : t.interior;
     auto add = [&](ParticleId p, int corner, const Vec3& f) {
       if (!(along_normal >> corner & 1)) {
         F[p] += f;
@@ -117,11 +143,13 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
     const Cst& t = *tp;
     if (t.membrane.mode != Membrane::FormFinding || !t.interior) continue;
     for (const ParticleId p : {t.i, t.j, t.k}) {
-      const Vec3 normal = cst_normal_[p];
+      const Vec3 normal = cst_normal_[p], smooth = cst_smooth_[p];
       const double nn = normal.squaredNorm();
-      if (nn > 0) F[p] += (cst_pull_[p].dot(normal) / nn) * normal;
+      F[p] += smooth;
+      if (nn > 0) F[p] += ((cst_pull_[p] - smooth).dot(normal) / nn) * normal;
       cst_pull_[p].setZero();
       cst_normal_[p].setZero();
+      cst_smooth_[p].setZero();
     }
   }
 }
