@@ -18,6 +18,7 @@
 #include "lua_commands.hpp"
 #include "lua_files.hpp"
 #include "lua_csv.hpp"
+#include "lua_sections.hpp"
 #include "lua_meshing.hpp"
 #include "lua_multires.hpp"
 #include "lua_params.hpp"
@@ -707,6 +708,7 @@ void open_tendril(lua_State* L, const SceneOptions& options) {
   set_fn<l_out>(L, "out");
   add_param(L);
   add_csv(L);
+  add_sections(L);
   add_file_functions(L);
   add_rule_constructor(L);
   lua_pushinteger(L, options.seed);
