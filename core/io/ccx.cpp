@@ -1,6 +1,7 @@
 #include "io/ccx.hpp"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -71,7 +72,7 @@ std::string spring_table(double N0, double k, double l0, bool tension_only) {
 }
 
 struct Deck {
-  std::string nodes, elements, sets, properties, initial, boundary, equations, loads, notes;
+  std::string nodes, elements, sets, properties, initial, boundary, equations, loads, dloads, notes;
   int next_element = 1;
 };
 
@@ -246,6 +247,31 @@ std::string ccx_string(const Model& m) {
   // initial stress in global axes ---------------------------------------------
   std::string triangles;
   std::set<BlockId> membrane_materials;
+  // Pressure (Model::set_pressure): each quad's area vector, oriented as the
+  // pressure pushes, under each of its corner triples, so that a triangle
+  // finds the side its pressure pushes.
+  std::map<std::array<ParticleId, 3>, Vec3> pushes;
+  std::vector<Vec3> pressure_force(P.capacity(), Vec3::Zero());
+  for (BlockId b : m.live_blocks()) {
+    const Block& blk = m.blocks[b];
+    if (blk.kind != BlockKind::Patch || blk.pressure == 0) continue;
+    for (const Model::Quad& q : m.pressure_quads(b)) {
+      const Vec3 area = 0.5 * (P.position[q[2]] - P.position[q[0]]).cross(P.position[q[3]] - P.position[q[1]]);
+      if (P.passive[q[0]] || P.passive[q[1]] || P.passive[q[2]] || P.passive[q[3]]) continue;  // dormant
+      for (int skip = 0; skip < 4; ++skip) {
+        std::array<ParticleId, 3> t;
+        for (int k = 0, n = 0; k < 4; ++k)
+          if (k != skip) t[n++] = q[k];
+        std::sort(t.begin(), t.end());
+        pushes[t] = area;
+      }
+      if (!blk.membrane.cst())  // bars: no face to load; the nodal forces of now, p A / 4 a corner
+        for (ParticleId p : q) pressure_force[p] += 0.25 * blk.pressure * area;
+    }
+    d.notes += "** patch " + std::to_string(b) + ": pressure " + num(blk.pressure) +
+               (blk.membrane.cst() ? " Pa on its triangles (*DLOAD, a follower load in ccx too; each corner takes a third of a triangle where tendril gives a quarter of a quad)\n"
+                                   : " Pa as the nodal forces of its current shape (a bar patch has no faces in ccx): they keep their direction where tendril's turn with the quads\n");
+  }
   const double t = kCcxMembraneThickness;
   for (std::size_t e = 0; e < m.csts.size(); ++e) {
     const Cst& c = m.csts[e];
@@ -285,6 +311,13 @@ std::string ccx_string(const Model& m) {
                     tau * (e1 * e2.transpose() + e2 * e1.transpose())) / t;
     const int el = d.next_element++;
     const std::string id = std::to_string(el);
+    if (m.blocks[b].pressure != 0) {
+      std::array<ParticleId, 3> key{c.i, c.j, c.k};
+      std::sort(key.begin(), key.end());
+      auto it = pushes.find(key);
+      if (it != pushes.end())  // P1 pushes along (j - i) x (k - i), P2 against it (checked on ccx 2.20)
+        d.dloads += id + (n.dot(it->second) >= 0 ? ", P1, " : ", P2, ") + num(m.blocks[b].pressure) + "\n";
+    }
     triangles += id + ", " + std::to_string(c.i + 1) + ", " + std::to_string(c.j + 1) + ", " +
                  std::to_string(c.k + 1) + "\n";
     d.sets += "*ELSET, ELSET=M" + id + "\n" + id + "\n";
@@ -308,7 +341,7 @@ std::string ccx_string(const Model& m) {
     if (!on_beam[p]) lock &= kLockTranslation;
     for (int dof = 0; dof < 6; ++dof)
       if (lock >> dof & 1) d.boundary += id + ", " + std::to_string(dof + 1) + ", " + std::to_string(dof + 1) + "\n";
-    const Vec3 f = P.load[p] + P.mass(p) * m.gravity;
+    const Vec3 f = P.load[p] + P.mass(p) * m.gravity + pressure_force[p];
     for (int k = 0; k < 3; ++k)
       if (f[k] != 0) d.loads += id + ", " + std::to_string(k + 1) + ", " + num(f[k]) + "\n";
     const Vec3 mo = P.moment[p];
@@ -342,6 +375,7 @@ std::string ccx_string(const Model& m) {
   if (!d.boundary.empty()) out += "*BOUNDARY\n" + d.boundary;
   out += "*STEP, NLGEOM, INC=10000\n*STATIC\n0.05, 1., 1e-5, 0.25\n";
   if (!d.loads.empty()) out += "*CLOAD\n" + d.loads;
+  if (!d.dloads.empty()) out += "*DLOAD\n" + d.dloads;
   out += "*NODE PRINT, NSET=NALL, FREQUENCY=10000\nU\n*NODE FILE, FREQUENCY=10000\nU\n*END STEP\n";
   return out;
 }

@@ -5,7 +5,9 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <map>
 
 #include "../physics/cst_scenes.hpp"
 #include "io/atomic_file.hpp"
@@ -91,6 +93,58 @@ TEST_CASE("ccx: a CST patch in analysis is M3D3 with d / t and its prestress / t
   const std::string s = line_after(deck, "*INITIAL CONDITIONS, TYPE=STRESS");
   CHECK(has(s, ", 1, 30000., 20000., 0., 0., 0., 0."));
   (void)t;
+}
+
+TEST_CASE("ccx: pressure on a CST patch is *DLOAD P1 where it pushes along (x_j - x_i) x (x_k - x_i), P2 against") {
+  FlatSquare sq(2, 2.0);
+  Membrane an;
+  an.mode = Membrane::Analysis;
+  an.sigma_warp = an.sigma_weft = 100;
+  an.dxx = an.dyy = 600;
+  an.dxy = an.dyx = 100;
+  an.G = 40;
+  sq.m.set_patch_formulation(sq.patch, an, triangles_of(sq.m, sq.patch, Vec3(1, 0, 0)));
+  const Particles& P = sq.m.particles;
+  // Each M3D3's label against the side its pressure pushes towards: ccx 2.20
+  // pushes P1 along the element's (x_j - x_i) x (x_k - x_i) (docs/calculix.md).
+  auto check_side = [&](const Vec3& towards) {
+    sq.m.set_pressure(sq.patch, 300, towards);
+    const std::string deck = ccx_string(sq.m);
+    REQUIRE(has(deck, "*DLOAD\n"));
+    std::map<int, std::string> label;  // element -> "P1, 300." or "P2, 300."
+    for (std::size_t at = deck.find("*DLOAD\n") + 7; at < deck.size() && deck[at] != '*';
+         at = deck.find('\n', at) + 1) {
+      const std::string line = deck.substr(at, deck.find('\n', at) - at);
+      label[std::stoi(line)] = line.substr(line.find(',') + 2);
+    }
+    std::size_t at = deck.find("*ELEMENT, TYPE=M3D3");
+    REQUIRE(at != std::string::npos);
+    int triangles = 0;
+    for (at = deck.find('\n', at) + 1; deck[at] != '*'; at = deck.find('\n', at) + 1) {
+      int el, i, j, k;
+      REQUIRE(std::sscanf(deck.c_str() + at, "%d, %d, %d, %d", &el, &i, &j, &k) == 4);
+      const Vec3 n = (P.position[j - 1] - P.position[i - 1]).cross(P.position[k - 1] - P.position[i - 1]);
+      CAPTURE(el);
+      CHECK(label[el] == (n.dot(towards) > 0 ? "P1, 300." : "P2, 300."));
+      ++triangles;
+    }
+    CHECK(triangles == 8);  // 2 x 2 quads, two triangles each
+    CHECK(label.size() == 8);
+    CHECK(!has(deck, "*CLOAD"));  // the faces carry it, no nodal forces besides
+  };
+  check_side(Vec3(0, 0, -1));
+  check_side(Vec3(0, 0, 1));
+}
+
+TEST_CASE("ccx: pressure on a bar patch is the nodal forces p A / 4 a quad corner of its shape now") {
+  FlatSquare sq(2, 2.0);  // four 1 x 1 quads; the middle particle corners all four
+  sq.m.set_pressure(sq.patch, 300, Vec3(0, 0, -1));
+  const std::string deck = ccx_string(sq.m);
+  CHECK(!has(deck, "*DLOAD"));
+  CHECK(has(deck, "*CLOAD\n"));
+  CHECK(has(deck, "\n" + std::to_string(sq.ps[4] + 1) + ", 3, -300.\n"));
+  CHECK(has(deck, "\n" + std::to_string(sq.ps[0] + 1) + ", 3, -75.\n"));  // a corner: one quad
+  CHECK(has(deck, "pressure 300. Pa as the nodal forces"));
 }
 
 TEST_CASE("ccx: the .dat reader takes the last block of displacements and names a bad line") {
