@@ -3,7 +3,7 @@
 #
 #   bench/run.sh [throughput|rule_cost|meshing|constraint_solvers] [options...]
 #   bench/run.sh sweep [RUNS]
-#   bench/run.sh fe [--param case=strip|ring|net] (tendril against CalculiX, bench/fe/fe.lua)
+#   bench/run.sh fe [--param case=strip|ring|ring-p|net|frame] (tendril against CalculiX, bench/fe/fe.lua)
 #   bench/run.sh hybrids   (textile hybrids with every integrator, bench/hybrids.lua)
 #   bench/run.sh studio [SIZES [SECONDS]]   (e.g. 2000,20000,100000 5: the default)
 #
