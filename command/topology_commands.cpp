@@ -41,11 +41,20 @@ void declare_topology(std::vector<Command>& out) {
                  Returns::Block, [](Target& t, Args& a) {
                    return block_result(t.model.add_cable(particle(a, 0), particle(a, 1), section_at(a, 2), a[6].number));
                  }});
-  out.push_back({"delete", "rules 7, 18, 27: deletes a cable, beam or patch", Effect::Topology,
+  out.push_back({"bar", "rule 6: a two-way elastic bar (tension and compression) between two particles",
+                 Effect::Topology,
+                 with_section({{"a", Type::Particle, "one end"}, {"b", Type::Particle, "the other end"}},
+                              {{"rest_length", Type::Number, "rest length [m]; 0: the current distance", {0, kInf}}}),
+                 Returns::Block, [](Target& t, Args& a) {
+                   return block_result(
+                       t.model.add_elastic_bar(particle(a, 0), particle(a, 1), section_at(a, 2), a[6].number));
+                 }});
+  out.push_back({"delete", "rules 7, 18, 27: deletes a cable, bar, beam or patch", Effect::Topology,
                  {{"block", Type::Block, "the block"}}, Returns::Nothing, [](Target& t, Args& a) {
                    Model& m = t.model;
                    const BlockId b = block(a, 0);
                    if (m.blocks[b].kind == BlockKind::Cable) m.delete_cable(b);
+                   else if (m.blocks[b].kind == BlockKind::Bar) m.delete_elastic_bar(b);
                    else if (m.blocks[b].kind == BlockKind::Patch) m.delete_patch(b);
                    else m.delete_beam(b);
                    return nothing();

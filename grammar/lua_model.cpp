@@ -227,8 +227,8 @@ int l_gc(lua_State* L) {
   return 0;
 }
 
-int l_cable(lua_State* L) {
-  const char* fn = "cable";
+// m:cable(a, b, {...}) and m:bar(a, b, {...}): the same arguments (rule 6).
+int link(lua_State* L, const char* fn) {
   Scene& s = check_scene(L, fn);
   const ParticleId a = check_particle(L, 2, s, fn), b = check_particle(L, 3, s, fn);
   check_table(L, 4, fn);
@@ -239,8 +239,11 @@ int l_cable(lua_State* L) {
   command::Args args = {Value::of_id(a), Value::of_id(b)};
   append_section(args, sec);
   args.push_back(Value::of_number(rest));
-  return push_result(L, s, apply_command(L, s, "cable", std::move(args), fn, 2));
+  return push_result(L, s, apply_command(L, s, fn, std::move(args), fn, 2));
 }
+
+int l_cable(lua_State* L) { return link(L, "cable"); }
+int l_bar(lua_State* L) { return link(L, "bar"); }
 
 // The list of {x, y, z} under 'points' of the options at idx.
 std::vector<Vec3> field_points(lua_State* L, int idx, const char* fn) {
@@ -575,6 +578,7 @@ int l_count(lua_State* L) {
   set("particles", m.particle_count());
   set("blocks", m.block_count());
   set("cables", m.block_count(BlockKind::Cable));
+  set("two_way_bars", m.block_count(BlockKind::Bar));
   set("beams", m.block_count(BlockKind::Beam));
   set("patches", m.block_count(BlockKind::Patch));
   set("darts", m.map.dart_count());
@@ -668,6 +672,7 @@ void register_model_meta(lua_State* L) {
   add_command_methods(L);  // first: the methods below take Lua shapes of their own
   add_readout_methods(L);
   set_fn<l_cable>(L, "cable");
+  set_fn<l_bar>(L, "bar");
   set_fn<l_beam>(L, "beam");
   set_fn<l_quad_grid>(L, "quad_grid");
   set_fn<l_lock>(L, "lock");

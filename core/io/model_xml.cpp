@@ -373,9 +373,10 @@ std::string write_document(const Model& m, const SolverSettings& s) {
   for (BlockId b : m.live_blocks()) {
     const Block& blk = m.blocks[b];
     switch (blk.kind) {
-      case BlockKind::Cable: {
+      case BlockKind::Cable:
+      case BlockKind::Bar: {
         Dart d = blk.dart;
-        w.open("cable");
+        w.open(blk.kind == BlockKind::Bar ? "bar" : "cable");
         w.attr("id", id);
         w.attr("a", dense[m.dart_particle[d]]);
         w.attr("b", dense[m.dart_particle[m.map.alpha(0, d)]]);
@@ -634,7 +635,7 @@ class Reader {
   std::string name_;
   void read_solver(const tinyxml2::XMLElement* e, SolverSettings& s) const;
   ParticleRecord read_particle(const tinyxml2::XMLElement* e) const;
-  BlockRecord read_cable(const tinyxml2::XMLElement* e) const;
+  BlockRecord read_cable(const tinyxml2::XMLElement* e, BlockKind kind) const;  // a cable or a bar
   BlockRecord read_beam(const tinyxml2::XMLElement* e) const;
   BlockRecord read_patch(const tinyxml2::XMLElement* e) const;
   BlockRecord read_quad_patch(const tinyxml2::XMLElement* e, Attributes& a, BlockRecord& b) const;
@@ -840,10 +841,10 @@ ParticleRecord Reader::read_particle(const tinyxml2::XMLElement* e) const {
   return p;
 }
 
-BlockRecord Reader::read_cable(const tinyxml2::XMLElement* e) const {
+BlockRecord Reader::read_cable(const tinyxml2::XMLElement* e, BlockKind kind) const {
   Attributes a(*this, e);
   BlockRecord b;
-  b.kind = BlockKind::Cable;
+  b.kind = kind;
   b.element = e;
   b.id = a.index("id");
   unsigned pa = a.index("a"), pb = a.index("b");
@@ -1062,7 +1063,7 @@ void Reader::check_references(const Document& d) const {
     const tinyxml2::XMLElement* e = b.element;
     // Walk node children (beams, patches) or the a/b attributes (cables).
     std::vector<std::pair<const tinyxml2::XMLElement*, const char*>> refs;
-    if (b.kind == BlockKind::Cable) {
+    if (b.kind == BlockKind::Cable || b.kind == BlockKind::Bar) {
       refs = {{e, "a"}, {e, "b"}};
     } else {
       for (const tinyxml2::XMLElement* c = e->FirstChildElement("node"); c; c = c->NextSiblingElement("node"))
@@ -1196,7 +1197,8 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
       for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
         const std::string kind = c->Name();
         BlockRecord b;
-        if (kind == "cable") b = read_cable(c);
+        if (kind == "cable") b = read_cable(c, BlockKind::Cable);
+        else if (kind == "bar") b = read_cable(c, BlockKind::Bar);
         else if (kind == "beam") b = read_beam(c);
         else if (kind == "patch") b = read_patch(c);
         else fail(c, "unknown element <" + clipped(kind.c_str()) + "> inside <blocks>");
@@ -1241,6 +1243,7 @@ void build(const Reader& reader, const Document& d, Model& m) {
       BlockId b = 0;
       switch (r.kind) {
         case BlockKind::Cable: b = m.add_cable(ps[0], ps[1], r.section, r.edges[0].rest); break;
+        case BlockKind::Bar: b = m.add_elastic_bar(ps[0], ps[1], r.section, r.edges[0].rest); break;
         case BlockKind::Beam: b = m.add_beam(ps, r.section, r.closed); break;
         case BlockKind::Patch:
           if (r.rows == 0) {

@@ -11,6 +11,8 @@
 //     </particles>                                     external moment; when set)
 //     <blocks>
 //       <cable id a b EA EI prestress line_mass rest_length/>
+//       <bar id a b EA EI prestress line_mass rest_length/>  (two-way: tension
+//                                                             and compression)
 //       <beam id closed dofs EA EI prestress line_mass GJ EIy EIz>
 //         <node p/> <segment rest/> <node p/> ...   (nodes in path order;
 //       </beam>                                      segment k joins node k, k+1)

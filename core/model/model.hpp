@@ -110,6 +110,11 @@ class Model {
   // Rule 6. A rest length <= 0 takes the current distance.
   BlockId add_cable(ParticleId a, ParticleId b, const Section& s, double rest_length = 0);
   void delete_cable(BlockId b);                                       // rule 7
+  // Rule 6 of kind "bar": a two-way elastic bar (BlockKind::Bar), the same
+  // bar law (eq. 3.32) in compression as in tension (thesis 6.3.2, BAT02's
+  // bars between the ring's quadrants). Rule 7 deletes it.
+  BlockId add_elastic_bar(ParticleId a, ParticleId b, const Section& s, double rest_length = 0);
+  void delete_elastic_bar(BlockId b);
 
   // --- beams (rules 8-18) ----------------------------------------------
   // Rule 8: a spline beam through existing particles (open path or ring).
@@ -406,7 +411,8 @@ class Model {
   ParticleId new_particle(const Vec3& x);
   void free_particle(ParticleId p);
   void remove_goals_of(ParticleId p);  // goals.cpp
-  BlockId new_block(BlockKind k, Section s, bool closed);  // by value: s may live in `blocks`
+  BlockId new_block(BlockKind k, Section s, bool closed);
+  BlockId add_link(BlockKind k, ParticleId a, ParticleId b, const Section& s, double rest, const char* fn);  // by value: s may live in `blocks`
   void free_block(BlockId b);
   Dart new_dart(BlockId b, ParticleId p);
   void free_dart(Dart d);

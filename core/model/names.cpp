@@ -41,6 +41,7 @@ const char* block_kind_name(BlockKind k) {
     case BlockKind::Cable: return "cable";
     case BlockKind::Beam: return "beam";
     case BlockKind::Patch: return "patch";
+    case BlockKind::Bar: return "bar";
   }
   return "?";
 }

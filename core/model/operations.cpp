@@ -186,14 +186,24 @@ void check_section(const Section& s, const char* what, bool beam) {
 }  // namespace
 
 BlockId Model::add_cable(ParticleId a, ParticleId b, const Section& s, double rest) {
-  require_particle(a, "cable");
-  require_particle(b, "cable");
-  if (a == b) throw ModelError("cable: both ends are particle " + pid(a));
-  check_section(s, "cable", false);
-  if (!std::isfinite(rest)) throw ModelError("cable: rest_length must be finite");
+  return add_link(BlockKind::Cable, a, b, s, rest, "cable");
+}
+
+BlockId Model::add_elastic_bar(ParticleId a, ParticleId b, const Section& s, double rest) {
+  return add_link(BlockKind::Bar, a, b, s, rest, "bar");
+}
+
+// One edge with one Bar element; add_bar reads tension_only from the kind.
+BlockId Model::add_link(BlockKind kind, ParticleId a, ParticleId b, const Section& s, double rest, const char* fn) {
+  const std::string f = fn;
+  require_particle(a, fn);
+  require_particle(b, fn);
+  if (a == b) throw ModelError(f + ": both ends are particle " + pid(a));
+  check_section(s, fn, false);
+  if (!std::isfinite(rest)) throw ModelError(f + ": rest_length must be finite");
   double length = rest > 0 ? rest : (particles.position[a] - particles.position[b]).norm();
-  if (length <= 0) throw ModelError("cable: particles " + pid(a) + " and " + pid(b) + " coincide; give a rest_length");
-  BlockId blk = new_block(BlockKind::Cable, s, false);
+  if (length <= 0) throw ModelError(f + ": particles " + pid(a) + " and " + pid(b) + " coincide; give a rest_length");
+  BlockId blk = new_block(kind, s, false);
   Dart d = new_dart(blk, a), e = new_dart(blk, b);
   map.link(0, d, e);
   set_edge_rest_length(d, length);
@@ -204,6 +214,12 @@ BlockId Model::add_cable(ParticleId a, ParticleId b, const Section& s, double re
 void Model::delete_cable(BlockId b) {
   require_block(b, "delete_cable");
   if (blocks[b].kind != BlockKind::Cable) throw ModelError("delete_cable: block " + std::to_string(b) + " is not a cable");
+  delete_component(b);
+}
+
+void Model::delete_elastic_bar(BlockId b) {
+  require_block(b, "delete_bar");
+  if (blocks[b].kind != BlockKind::Bar) throw ModelError("delete_bar: block " + std::to_string(b) + " is not a bar");
   delete_component(b);
 }
 

@@ -73,9 +73,10 @@ void Model::set_rest_length(ParticleId a, ParticleId b, double length) {
     throw ModelError("rest_length: must be a finite number > 0, got " + std::to_string(length));
   Dart d = find_edge(a, b, BlockKind::Beam);
   if (d == kNoDart) d = find_edge(a, b, BlockKind::Cable);
+  if (d == kNoDart) d = find_edge(a, b, BlockKind::Bar);
   if (d == kNoDart)
     throw ModelError("rest_length: particles " + std::to_string(a) + " and " + std::to_string(b) +
-                     " are not consecutive on a beam or a cable");
+                     " are not consecutive on a beam, a cable or a bar");
   set_edge_rest_length(d, length);
   if (const ElementIndex e = dart_bar[d]; e != kNone) {
     unbind_bar(e);
@@ -90,9 +91,10 @@ double Model::edge_rest_length(ParticleId a, ParticleId b) const {
   require_particle(b, "rest_length");
   Dart d = find_edge(a, b, BlockKind::Beam);
   if (d == kNoDart) d = find_edge(a, b, BlockKind::Cable);
+  if (d == kNoDart) d = find_edge(a, b, BlockKind::Bar);
   if (d == kNoDart)
     throw ModelError("rest_length: particles " + std::to_string(a) + " and " + std::to_string(b) +
-                     " are not consecutive on a beam or a cable");
+                     " are not consecutive on a beam, a cable or a bar");
   return rest_length[d];
 }
 

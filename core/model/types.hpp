@@ -27,7 +27,8 @@ enum class Role : std::uint8_t { None, Parent, Child, Volatile };
 const char* role_name(Role r);
 bool parse_role(const std::string& name, Role& out);
 
-enum class BlockKind { Cable, Beam, Patch };
+// Bar: a two-way elastic bar (tension and compression), a cable's twin.
+enum class BlockKind { Cable, Beam, Patch, Bar };
 const char* block_kind_name(BlockKind k);
 
 // Lock bits: translation x, y, z then rotation x, y, z (global axes).

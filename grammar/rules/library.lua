@@ -93,11 +93,21 @@ define("explode_from", "rule 5: explode a particle from one block",
 
 -- Cables ---------------------------------------------------------------------
 
-define("cable", "rule 6: create a cable", nil,
-  function(m, a, b, section) return m:cable(a, b, section) end)
+-- kind: "cable" (tension only, the default) or "bar" (two-way elastic bar).
+define("cable", "rule 6: create a cable or a two-way bar",
+  function(m, a, b, section, kind)
+    return kind == nil or kind == "cable" or kind == "bar", "the kind must be \"cable\" or \"bar\""
+  end,
+  function(m, a, b, section, kind)
+    if kind == "bar" then return m:bar(a, b, section) end
+    return m:cable(a, b, section)
+  end)
 
-define("delete_cable", "rule 7: delete a cable",
-  function(m, c) return kind_is(m, c, "cable") end,
+define("delete_cable", "rule 7: delete a cable or a two-way bar",
+  function(m, c)
+    local k = m:kind(c)
+    return k == "cable" or k == "bar", string.format("block %d is a %s, not a cable or a bar", c.id, k)
+  end,
   function(m, c) m:delete(c) end)
 
 -- Beams ----------------------------------------------------------------------

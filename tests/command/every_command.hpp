@@ -112,6 +112,11 @@ inline void apply_every_command(Recorded& r, const std::filesystem::path& base) 
   r.run("explode_from", {id(joined), id(beam_d)});
   r.run("delete", {id(cable)});
   (void)c0;  // the cable's delete took its isolated end along
+  // A two-way bar with a rest length of its own, deleted again.
+  const std::uint32_t s0 = r.particle(0, 4, 0), s1 = r.particle(1, 4, 0);
+  const std::uint32_t strut = r.run("bar", join({id(s0), id(s1)}, join(section(1e3, 0), {num(0.9)}))).ids[0];
+  r.run("rest_length", {id(s0), id(s1), num(0.95)});
+  r.run("delete", {id(strut)});
   r.run("delete_particle", {id(r.particle(9, 9, 9))});
   // Two patches side by side, sewn, cut, switched to CST.
   std::vector<std::uint32_t> grid;
