@@ -1,5 +1,5 @@
 // Goals of the constraint-based solvers (thesis 3.3.5): anchors, planes,
-// lines and lengths with a weight.
+// lines and lengths with a weight, and planar quad faces (fig. 6.6).
 #include <utility>
 
 #include "command/declare.hpp"
@@ -58,6 +58,22 @@ void declare_goals(std::vector<Command>& out) {
                   {"direction", Type::Vector, "plane: its normal; line: its direction", {}, {}, true},
                   {"weight", Type::Number, "the stiffness of the goal [N/m]", {0, kInf, true}}},
                  Returns::Goal, add_goal, 0, Returns::Nothing, nullptr, false, goal_on_line});
+  out.push_back({"planarity", "a planarity goal: a quad face's four corners onto their best-fit plane, with a weight",
+                 Effect::Setting,
+                 {{"weight", Type::Number, "the stiffness of the goal [N/m]", {0, kInf, true}},
+                  {"corners", Type::Particles, "the quad's four corners in order round it"}},
+                 Returns::Goal, [](Target& t, Args& a) {
+                   const std::vector<std::uint32_t>& c = a[1].ids;
+                   if (c.size() != 4) throw ArgumentError(1, "needs four particles, got " + std::to_string(c.size()));
+                   Goal g;
+                   g.kind = Goal::Planar;
+                   g.i = c[0], g.j = c[1], g.k = c[2], g.l = c[3];
+                   g.weight = a[0].number;
+                   Result r;
+                   r.kind = Returns::Goal;
+                   r.index = t.model.add_goal(g);
+                   return r;
+                 }});
   out.push_back({"goal_weight", "sets a goal's weight", Effect::Setting,
                  {{"goal", Type::Goal, "a goal"}, {"weight", Type::Number, "[N/m]", {0, kInf, true}}}, Returns::Nothing,
                  [](Target& t, Args& a) {

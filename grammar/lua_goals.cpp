@@ -45,9 +45,18 @@ int l_goal(lua_State* L) {
   Goal g;
   const std::string kind = field_string(L, 2, "kind", fn, "");
   if (!parse_goal_kind(kind, g.kind))
-    key_error(fn, "kind", "must be \"anchor\", \"plane\", \"line\" or \"length\", got \"" + kind + "\"");
+    key_error(fn, "kind", "must be \"anchor\", \"plane\", \"line\", \"length\" or \"planar\", got \"" + kind + "\"");
   if (!has_field(L, 2, "weight")) key_error(fn, "weight", "is required [N/m]");
   g.weight = field_number(L, 2, "weight", fn, 0);
+  if (g.kind == Goal::Planar) {  // the planarity command
+    lua_getfield(L, 2, "particles");
+    const std::vector<ParticleId> ps = check_particle_list(L, lua_gettop(L), s, fn);
+    lua_pop(L, 1);
+    if (ps.size() != 4) key_error(fn, "particles", "must hold the quad's four corners");
+    using command::Value;
+    return push_result(L, s, apply_command(L, s, "planarity",
+                                           {Value::of_number(g.weight), Value::of_ids({ps.begin(), ps.end()})}, fn));
+  }
   if (g.kind == Goal::Length) {
     lua_getfield(L, 2, "particles");
     const std::vector<ParticleId> ps = check_particle_list(L, lua_gettop(L), s, fn);
@@ -72,10 +81,23 @@ int l_goal(lua_State* L) {
   return push_goal(L, s, g, fn);
 }
 
+// m:planarity({a, b, c, d}, weight): the quad face onto its best-fit plane.
+int l_planarity(lua_State* L) {
+  const char* fn = "planarity";
+  Scene& s = check_scene(L, fn);
+  const std::vector<ParticleId> ps = check_particle_list(L, 2, s, fn);
+  if (ps.size() != 4) arg_error(fn, 2, "expected the quad's four corners, got " + std::to_string(ps.size()));
+  using command::Value;
+  return push_result(L, s, apply_command(L, s, "planarity",
+                                         {Value::of_number(check_number(L, 3, fn)), Value::of_ids({ps.begin(), ps.end()})},
+                                         fn));
+}
+
 }  // namespace
 
 void add_goal_methods(lua_State* L) {
   set_fn<l_anchor>(L, "anchor");
+  set_fn<l_planarity>(L, "planarity");
   set_fn<l_goal>(L, "goal");
 }
 

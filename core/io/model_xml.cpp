@@ -512,7 +512,11 @@ std::string write_document(const Model& m, const SolverSettings& s) {
       w.open("goal");
       w.attr("kind", goal_kind_name(g.kind));
       w.attr("i", dense[g.i]);
-      if (g.kind == Goal::Length) {
+      if (g.kind == Goal::Planar) {
+        w.attr("j", dense[g.j]);
+        w.attr("k", dense[g.k]);
+        w.attr("l", dense[g.l]);
+      } else if (g.kind == Goal::Length) {
         w.attr("j", dense[g.j]);
         w.attr("length", g.length);
       } else {
@@ -1132,9 +1136,13 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
         r.element = c;
         Goal& g = r.goal;
         const char* kind = a.raw("kind");
-        if (!kind || !parse_goal_kind(kind, g.kind)) a.bad("kind", "must be anchor, plane, line or length");
+        if (!kind || !parse_goal_kind(kind, g.kind)) a.bad("kind", "must be anchor, plane, line, length or planar");
         g.i = a.index("i");
-        if (g.kind == Goal::Length) {
+        if (g.kind == Goal::Planar) {
+          g.j = a.index("j");
+          g.k = a.index("k");
+          g.l = a.index("l");
+        } else if (g.kind == Goal::Length) {
           g.j = a.index("j");
           g.length = a.real("length");
         } else {
@@ -1346,10 +1354,17 @@ void build(const Reader& reader, const Document& d, Model& m) {
     auto i = id_of.find(g.i);
     if (i == id_of.end()) reader.fail(r.element, "attribute 'i': no particle " + std::to_string(g.i));
     g.i = i->second;
-    if (g.kind == Goal::Length) {
+    if (g.kind == Goal::Length || g.kind == Goal::Planar) {
       auto j = id_of.find(g.j);
       if (j == id_of.end()) reader.fail(r.element, "attribute 'j': no particle " + std::to_string(g.j));
       g.j = j->second;
+    }
+    if (g.kind == Goal::Planar) {
+      for (auto [name, q] : {std::pair<const char*, ParticleId*>{"k", &g.k}, {"l", &g.l}}) {
+        auto it = id_of.find(*q);
+        if (it == id_of.end()) reader.fail(r.element, std::string("attribute '") + name + "': no particle " + std::to_string(*q));
+        *q = it->second;
+      }
     }
     try {
       m.add_goal(g);

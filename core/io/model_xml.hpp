@@ -33,6 +33,7 @@
 //       a-b of length l1, c at x along it and h across).
 //     </blocks>
 //     <joints> <joint particle angle stiffness/> ... </joints>   (only if any)
+//     <goals> <goal kind i (j length | x y z [dx dy dz] | j k l) weight/> ... </goals>
 //   </tendril>
 //
 // Saving numbers particles and blocks densely (0..n-1) in the order of their

@@ -80,18 +80,20 @@ struct Cst {
 // `point`. Plane: i onto the plane through `point` with normal
 // `direction`. Line: i onto the line through `point` along `direction`
 // (either of any non-zero length, stored as given). Length: i and j at
-// `length` apart. The explicit integrators read it as a spring of stiffness
-// `weight` to the same projection (into S, eq. 3.4), so every integrator
-// honours it. goals.cpp.
+// `length` apart. Planar: the quad face i, j, k, l onto its best-fit plane
+// (physics/planarity.hpp). The explicit integrators read it as a spring of
+// stiffness `weight` to the same projection (into S, eq. 3.4), so every
+// integrator honours it. goals.cpp.
 struct Goal {
-  enum Kind : std::uint8_t { Anchor, Plane, Line, Length };
+  enum Kind : std::uint8_t { Anchor, Plane, Line, Length, Planar };
   Kind kind = Anchor;
-  ParticleId i = kNone, j = kNone;  // j: Length only
+  ParticleId i = kNone, j = kNone;  // j: Length and Planar
+  ParticleId k = kNone, l = kNone;  // Planar only
   Vec3 point = Vec3::Zero(), direction = Vec3::Zero();
   double length = 0;
   double weight = 0;
 };
-const char* goal_kind_name(Goal::Kind k);  // "anchor", "plane", "line", "length"
+const char* goal_kind_name(Goal::Kind k);  // "anchor", "plane", "line", "length", "planar"
 bool parse_goal_kind(const std::string& name, Goal::Kind& out);
 
 // A flat element buffer, partitioned for multi-resolution (thesis 5.5.2.3):

@@ -1,4 +1,5 @@
-// Goals of the constraint-based solvers: anchors, planes, lines, lengths.
+// Goals of the constraint-based solvers: anchors, planes, lines, lengths,
+// planar quad faces.
 #include <cmath>
 #include <utility>
 
@@ -12,12 +13,13 @@ const char* goal_kind_name(Goal::Kind k) {
     case Goal::Plane: return "plane";
     case Goal::Line: return "line";
     case Goal::Length: return "length";
+    case Goal::Planar: return "planar";
   }
   return "?";
 }
 
 bool parse_goal_kind(const std::string& name, Goal::Kind& out) {
-  for (Goal::Kind k : {Goal::Anchor, Goal::Plane, Goal::Line, Goal::Length})
+  for (Goal::Kind k : {Goal::Anchor, Goal::Plane, Goal::Line, Goal::Length, Goal::Planar})
     if (name == goal_kind_name(k)) {
       out = k;
       return true;
@@ -28,7 +30,14 @@ bool parse_goal_kind(const std::string& name, Goal::Kind& out) {
 std::size_t Model::add_goal(Goal g) {
   const std::string fn = std::string("goal (") + goal_kind_name(g.kind) + ")";
   require_particle(g.i, fn.c_str());
-  if (g.kind == Goal::Length) {
+  if (g.kind == Goal::Planar) {
+    const ParticleId c[4] = {g.i, g.j, g.k, g.l};
+    for (int a = 1; a < 4; ++a) require_particle(c[a], fn.c_str());
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        if (c[a] == c[b]) throw ModelError(fn + ": corner " + std::to_string(a + 1) + " and corner " +
+                                           std::to_string(b + 1) + " are both particle " + std::to_string(c[a]));
+  } else if (g.kind == Goal::Length) {
     require_particle(g.j, fn.c_str());
     if (g.i == g.j) throw ModelError(fn + ": the two particles must differ");
     if (!(g.length >= 0) || !std::isfinite(g.length)) throw ModelError(fn + ": the length must be a finite number >= 0");
@@ -36,6 +45,7 @@ std::size_t Model::add_goal(Goal g) {
     g.j = kNone;
     if (!g.point.allFinite()) throw ModelError(fn + ": the point is not finite");
   }
+  if (g.kind != Goal::Planar) g.k = g.l = kNone;
   if (g.kind == Goal::Plane || g.kind == Goal::Line) {
     const double n = g.direction.norm();
     if (!(n > 0) || !std::isfinite(n))
@@ -64,7 +74,7 @@ void Model::set_goal_weight(std::size_t index, double weight) {
 void Model::remove_goals_of(ParticleId p) {
   for (std::size_t k = goals.size(); k-- > 0;) {
     const Goal& g = std::as_const(goals)[k];
-    if (g.i == p || g.j == p) remove_goal(k);
+    if (g.i == p || g.j == p || g.k == p || g.l == p) remove_goal(k);
   }
 }
 

@@ -187,6 +187,7 @@ inline GoalForce goal_force(const Goal& g, const Vec3* x, double gf) {
       if (!(l > 0)) return {Vec3::Zero(), w};
       return {Vec3((T / l) * d), w + (T > 0 ? gf * T / l : 0.0)};
     }
+    case Goal::Planar: break;  // four corners: physics/planarity.hpp
   }
   return {};
 }

@@ -2,6 +2,7 @@
 // particle towards its projection with its weight, which joins S (eq. 3.4)
 // so the fictitious masses keep the step stable.
 #include "physics/element_forces.hpp"
+#include "physics/planarity.hpp"
 #include "physics/solver.hpp"
 
 namespace tendril {
@@ -11,6 +12,19 @@ void Solver::accumulate_goal_forces(const Vec3* x, Vec3* F, double* S) const {
   const double gf = settings.geometric_factor;
   for (const Goal& g : model_.goals) {
     if (!active[g.i] || (g.j != kNone && !active[g.j])) continue;  // a passive particle stays frozen
+    if (g.kind == Goal::Planar) {
+      if (!(active[g.k] & active[g.l])) continue;
+      // S: the row sum of the goal's stiffness, w (1 - 1/4) on a corner's
+      // own offset and w / 4 through each of the three others (S = w, the
+      // twist's stiffness alone, lands a symmetric twist on its equilibrium
+      // in one step, where Leapfrog's peak interpolation cannot see a peak).
+      const PlanarityPulls f = planarity_pulls(g, x);
+      for (int a = 0; a < 4; ++a) {
+        F[f.p[a]] += f.f[a];
+        S[f.p[a]] += 1.5 * g.weight;
+      }
+      continue;
+    }
     const GoalForce f = goal_force(g, x, gf);
     F[g.i] += f.fi;
     S[g.i] += f.k;

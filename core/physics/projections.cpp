@@ -2,6 +2,7 @@
 #include "physics/projections.hpp"
 
 #include "physics/element_forces.hpp"
+#include "physics/planarity.hpp"
 
 namespace tendril {
 
@@ -77,6 +78,12 @@ void accumulate_projections(const Model& m, const Vec3* x, const Quat* q, double
   }
   for (const Goal& g : m.goals) {  // the exact projections, weight w (twice it for a length)
     if (!active[g.i] || (g.j != kNone && !active[g.j])) continue;
+    if (g.kind == Goal::Planar) {  // each corner onto the best-fit plane, weight w
+      if (!(active[g.k] & active[g.l])) continue;
+      const PlanarityPulls f = planarity_pulls(g, x);
+      for (int a = 0; a < 4; ++a) add(s, f.p[a], g.weight, f.f[a]);
+      continue;
+    }
     const GoalForce f = goal_force(g, x, gf);
     if (g.kind != Goal::Length) {
       add(s, g.i, f.k, f.fi);

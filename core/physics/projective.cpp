@@ -72,8 +72,18 @@ void ProjectiveSystem::factor(const Key& key, const Model& m, const Vec3* x, con
       add_term<2>(t, row, {b.i, b.j}, {-1, 1}, w);
     }
     for (const Goal& g : m.goals) {
-      if (g.kind == Goal::Length) add_term<2>(t, row, {g.i, g.j}, {-1, 1}, g.weight);
-      else add_term<1>(t, row, {g.i}, {1}, g.weight);
+      if (g.kind == Goal::Length) {
+        add_term<2>(t, row, {g.i, g.j}, {-1, 1}, g.weight);
+      } else if (g.kind == Goal::Planar) {  // w (I - 1 1^T / 4): the corners about their centroid
+        const ParticleId c[4] = {g.i, g.j, g.k, g.l};
+        for (int a = 0; a < 4; ++a) {
+          double coef[4] = {-0.25, -0.25, -0.25, -0.25};
+          coef[a] += 1;
+          add_term<4>(t, row, {c[0], c[1], c[2], c[3]}, coef, g.weight);
+        }
+      } else {
+        add_term<1>(t, row, {g.i}, {1}, g.weight);
+      }
     }
     for (const RotationalJoint& jt : m.joints.items) {
       ParticleId nb[4];

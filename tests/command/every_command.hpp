@@ -149,6 +149,7 @@ inline void apply_every_command(Recorded& r, const std::filesystem::path& base) 
   const std::size_t g = r.run("goal", {word("plane"), id(b1), none(), none(), vec(0, 0, 0), vec(0, 0, 1), num(10)}).index;
   r.run("goal", {word("length"), id(a0), id(b0), num(1.2), none(), none(), num(5)});
   r.run("goal_weight", {id(g), num(20)});
+  r.run("planarity", {num(7), ids({a0, b0, b1, a1})});
   r.run("steps", {id(3)});
   r.run("remove_goal", {id(g)});
   r.run("steps", {id(2)});
