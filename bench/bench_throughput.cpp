@@ -2,8 +2,13 @@
 // (Leapfrog, kinetic damping) on a bar net and on a grid of 3-DOF beams, and
 // the memory the model takes per particle. DESIGN "Targets": >= 30 million
 // particle-iterations per second on one core for the bar net.
+// First, the bar net against the memory bound (issue 18): a STREAM triad
+// (a = b + s c, 24 bytes per element, best of 10) measures the bandwidth on
+// 1 and 2 threads, Solver::fused_step_bytes() gives the bytes a step moves,
+// their quotient the particle-iterations per second memory allows; the
+// fraction is tendril's share of that bound, all in the same run.
 //
-//   bench_throughput [--sizes 10K,100K,1M] [--seconds 1.5]
+//   bench_throughput [--sizes 10K,100K,1M] [--seconds 1.5] [--threads 1,2]
 #include <malloc.h>
 #include <unistd.h>
 
@@ -22,6 +27,7 @@
 #include "model/model.hpp"
 #include "multires.hpp"
 #include "physics/solver.hpp"
+#include "physics/workers.hpp"
 
 using namespace tendril;
 using namespace tendril::bench;
@@ -132,11 +138,36 @@ struct Measurement {
   double build_s = 0;
   long rss_growth = 0;
   std::uint64_t steps = 0;
-  double seconds = 0;
+  double seconds = 0;       // CPU time of the calling thread (one thread)
+  double wall_seconds = 0;  // wall time (the measure with threads)
+  double step_bytes = 0;    // Solver::fused_step_bytes()
   std::string check;
 };
 
-Measurement measure(const Case& c, std::size_t requested, double target_seconds) {
+// STREAM's triad a = b + s c over arrays far beyond the caches, split into
+// equal contiguous parts over `threads` threads of the solver's pool: the
+// best of 10 in GB/s (24 bytes per element, write-allocate not counted).
+double triad_gbs(unsigned threads) {
+  const std::size_t n = std::size_t(1) << 24;  // 128 MB per array
+  std::vector<double> a(n, 0.0), b(n, 1.0), c(n, 2.0);
+  Workers pool;
+  double best = 1e300;
+  for (int rep = 0; rep < 10; ++rep) {
+    const auto t0 = Clock::now();
+    pool.run(threads, [&](unsigned t) {
+      const std::size_t begin = n * t / threads, end = n * (t + 1) / threads;
+      double* __restrict pa = a.data();
+      const double* __restrict pb = b.data();
+      const double* __restrict pc = c.data();
+      for (std::size_t i = begin; i < end; ++i) pa[i] = pb[i] + 3.0 * pc[i];
+    });
+    best = std::min(best, seconds_since(t0));
+  }
+  if (a[n / 2] != 7.0) std::puts("triad: wrong result");
+  return 24.0 * double(n) / best / 1e9;
+}
+
+Measurement measure(const Case& c, std::size_t requested, double target_seconds, int threads = 1) {
   Measurement r;
   const int side = std::max(3, static_cast<int>(std::lround(std::sqrt(double(requested)))));
   const long rss0 = resident_bytes();
@@ -153,6 +184,7 @@ Measurement measure(const Case& c, std::size_t requested, double target_seconds)
 
   Solver solver(*model);
   solver.settings.damping = Damping::Kinetic;
+  solver.settings.threads = threads;
   for (int i = 0; i < 5; ++i) solver.step();  // warm-up: caches, first kinetic peaks
   // Calibrate on at least 0.2 s of steps, then time ~target_seconds.
   std::uint64_t probe = 0;
@@ -167,8 +199,11 @@ Measurement measure(const Case& c, std::size_t requested, double target_seconds)
   r.steps = static_cast<std::uint64_t>(std::clamp(std::ceil(target_seconds / per_step), 5.0, 1e7));
 
   const double cpu0 = thread_seconds();
+  t0 = Clock::now();
   for (std::uint64_t i = 0; i < r.steps; ++i) solver.step();
   r.seconds = thread_seconds() - cpu0;
+  r.wall_seconds = seconds_since(t0);
+  r.step_bytes = solver.fused_step_bytes();
   if (!std::isfinite(solver.residual())) r.check = "residual is not finite";
   else r.check = model->check();
   return r;
@@ -176,9 +211,10 @@ Measurement measure(const Case& c, std::size_t requested, double target_seconds)
 
 int usage(const char* argv0, int code) {
   std::fprintf(code ? stderr : stdout,
-               "usage: %s [--sizes 10K,100K,1M] [--seconds S]\n"
+               "usage: %s [--sizes 10K,100K,1M] [--seconds S] [--threads 1,2]\n"
                "  --sizes    particle counts (K/M suffixes; each becomes the nearest square grid)\n"
-               "  --seconds  target duration of each timed run (default 1.5)\n",
+               "  --seconds  target duration of each timed run (default 1.5)\n"
+               "  --threads  thread counts of the memory-bound table (default 1,2)\n",
                argv0);
   return code;
 }
@@ -188,6 +224,7 @@ int usage(const char* argv0, int code) {
 int main(int argc, char** argv) {
   std::vector<std::size_t> sizes{10'000, 100'000, 1'000'000};
   double target_seconds = 1.5;
+  std::vector<std::size_t> thread_counts{1, 2};
   try {
     for (int i = 1; i < argc; ++i) {
       std::string a = argv[i];
@@ -197,6 +234,11 @@ int main(int argc, char** argv) {
       };
       if (a == "--sizes") sizes = parse_sizes(value());
       else if (a == "--seconds") target_seconds = std::stod(value());
+      else if (a == "--threads") {
+        thread_counts = parse_sizes(value());
+        for (std::size_t t : thread_counts)
+          if (t > 64) throw std::runtime_error("--threads: at most 64");
+      }
       else if (a == "-h" || a == "--help") return usage(argv[0], 0);
       else throw std::runtime_error("unknown option '" + a + "'");
     }
@@ -206,7 +248,7 @@ int main(int argc, char** argv) {
   }
 
   const Case cases[] = {{"bar net", build_bar_net}, {"beam grid", build_beam_grid}, {"cst membrane", build_cst_membrane}};
-  std::puts("bench_throughput: Solver::step(), Leapfrog + kinetic damping, one thread");
+  std::puts("bench_throughput: Solver::step(), Leapfrog + kinetic damping");
   std::puts("  bar net   : s x s planar quad grid patch (add_quad_grid), bars EA=1e5 N, prestress 1e3 N;");
   std::puts("              boundary locked, 1 N out-of-plane load on every interior particle");
   std::puts("  beam grid : s beams along x and s along y through an s x s grid, every particle a crossing");
@@ -222,9 +264,36 @@ int main(int argc, char** argv) {
 #endif
   );
 
+  // The bar net against the memory bound: triad bandwidth, bytes per
+  // particle-iteration, the bound they imply and the share of it reached,
+  // with every thread count, wall time (the threads' work included).
+  std::printf("bar net against the memory bound (issue 18), wall time; load average %.2f at the start\n", load_average());
+  std::puts("  triad = STREAM a = b + s c, best of 10, GB/s; B/p-it = Solver::fused_step_bytes() / particles;");
+  std::puts("  bound = triad / (B/p-it); fraction = measured / bound; speed-up = this row / its 1-thread row");
+  std::vector<double> triad(thread_counts.size());
+  for (std::size_t t = 0; t < thread_counts.size(); ++t) triad[t] = triad_gbs(unsigned(thread_counts[t]));
+  Table bound({"particles", "threads", "triad GB/s", "B/p-it", "bound M p-it/s", "M p-it/s", "fraction", "speed-up"});
+  std::string failure;
+  for (std::size_t n : sizes) {
+    double single = 0;
+    for (std::size_t t = 0; t < thread_counts.size(); ++t) {
+      const Measurement r = measure(Case{"bar net", build_bar_net}, n, target_seconds, int(thread_counts[t]));
+      const double pit = double(r.particles) * double(r.steps) / r.wall_seconds;
+      const double bytes = r.step_bytes / double(r.particles);
+      const double limit = triad[t] * 1e9 / bytes;
+      if (t == 0) single = pit;
+      bound.add({fmt("%zu", r.particles), fmt("%zu", thread_counts[t]), fmt("%.1f", triad[t]), fmt("%.0f", bytes),
+                 fmt("%.1f", limit / 1e6), fmt("%.1f", pit / 1e6), fmt("%.0f %%", 100 * pit / limit),
+                 fmt("%.2f", pit / single)});
+      if (!r.check.empty() && failure.empty()) failure = fmt("bar net %zu threads %zu: ", r.particles, thread_counts[t]) + r.check;
+    }
+  }
+  bound.print();
+  std::printf("load average %.2f at the end\n", load_average());
+  std::puts("\none thread, thread CPU time:");
+
   Table table({"case", "particles", "bars", "hinges", "build s", "steps", "cpu s", "M p-it/s", "ns/p-step",
                "RSS MB", "B/particle"});
-  std::string failure;
   double bar_net_largest = -1;
   std::size_t bar_net_largest_n = 0;
   for (const Case& c : cases)

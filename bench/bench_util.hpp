@@ -24,6 +24,17 @@ inline double thread_seconds() {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
+// The 1-minute load average (/proc/loadavg): on a shared machine a figure
+// measured at load 2 on 2 cores is not one measured idle.
+inline double load_average() {
+  double l = -1;
+  if (std::FILE* f = std::fopen("/proc/loadavg", "r")) {
+    if (std::fscanf(f, "%lf", &l) != 1) l = -1;
+    std::fclose(f);
+  }
+  return l;
+}
+
 inline std::string fmt(const char* f, ...) {
   char buf[256];
   va_list ap;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the benchmarks (Release, in ./build) and runs them, printing tables.
 #
-#   bench/run.sh [throughput|rule_cost|meshing|constraint_solvers] [options...]
+#   bench/run.sh [throughput|rule_cost|meshing|constraint_solvers|net] [options...]
 #   bench/run.sh sweep [RUNS]
 #   bench/run.sh fe [--param case=strip|ring|ring-p|net|frame] (tendril against CalculiX, bench/fe/fe.lua)
 #   bench/run.sh hybrids   (textile hybrids with every integrator, bench/hybrids.lua)
@@ -14,6 +14,8 @@
 # with apt-get when it is missing (benchmarks only: CI does not need it).
 # `sweep` (only when asked for) measures a sweep's overhead per run, locally
 # and on a one-node Slurm cluster it starts (bench/sweep.sh; needs root).
+# `net` (only when asked for: minutes) times every integrator to equilibrium
+# on the issue-18 net (bench/bench_net.cpp).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -57,7 +59,7 @@ case "${1:-}" in
     sweep=1
     shift
     ;;
-  throughput | rule_cost | meshing | constraint_solvers)
+  throughput | rule_cost | meshing | constraint_solvers | net)
     benches=("$1")
     selected=1
     shift

@@ -224,6 +224,23 @@ void Solver::fused_kick_drift(bool whole_kick) {
   half_step_ = true;
 }
 
+// The traffic of fused_kick_drift, pass by pass (keep in step with it).
+double Solver::fused_step_bytes() const {
+  if (!fused_kick_drift_applies()) return 0;
+  const BarChunks& B = bar_chunks();
+  const double particles = double(B.particles.size()), bars = double(B.i.size()),
+               crossing = double(B.slot_force.size());
+  // Forces and kick, per particle: its id, load, point and lumped mass (the
+  // weight), force and stiffness written, lock, position gathered by the
+  // bars, velocity read and written.
+  const double kick = particles * (4 + 24 + 8 + 8 + 24 + 8 + 1 + 24 + 24 + 24);
+  // Per bar its ends, k, rest length, prestress and cable flag; per crossing
+  // bar its slot written, then read through the inbox (particle, slot).
+  const double elements = bars * (4 + 4 + 8 + 8 + 8 + 1) + crossing * (24 + 8 + 4 + 4 + 24 + 8);
+  const double drift = particles * (4 + 24 + 24 + 24);  // id, position read and written, velocity
+  return kick + elements + drift;
+}
+
 void Solver::synchronize_velocities() {
   if (!half_step_) return;
   // Leapfrog left v(t - dt/2); the synchronous methods start from v(t).

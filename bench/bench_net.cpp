@@ -1,0 +1,184 @@
+// Time to equilibrium of the issue-18 net for every integrator: s x s
+// particles 1 m apart, a bar on every grid edge (EA = 1e5 N, prestress
+// 1e3 N), the boundary locked, 1 N in -z on every interior particle. Each
+// integrator starts from the flat net and steps until the residual (the
+// largest force on a free axis) and motion() (the force that would stop the
+// fastest particle in one step) are both below 1e-3 N, then 1e-6 N, the
+// criterion of Solver::run. Wall time from the first step, so the
+// projective factorisation counts; the model is built before the clock
+// starts. A run that does not get there within --cap seconds reads "> cap".
+//
+//   bench_net [--sides 128,500] [--cap 60] [--threads 1] [--integrators leapfrog,projective,...]
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bench_util.hpp"
+#include "model/model.hpp"
+#include "physics/solver.hpp"
+
+using namespace tendril;
+using namespace tendril::bench;
+
+namespace {
+
+std::unique_ptr<Model> build_net(int s) {
+  auto m = std::make_unique<Model>();
+  std::vector<ParticleId> grid;
+  grid.reserve(std::size_t(s) * s);
+  for (int r = 0; r < s; ++r)
+    for (int c = 0; c < s; ++c) {
+      const ParticleId p = m->add_particle(Vec3(c, r, 0));
+      grid.push_back(p);
+      if (r == 0 || c == 0 || r == s - 1 || c == s - 1) m->set_lock(p, kLockTranslation);
+      else m->set_load(p, Vec3(0, 0, -1));
+    }
+  m->add_quad_grid(grid, s, s, Section{1e5, 0, 1e3, 0});
+  return m;
+}
+
+struct Variant {
+  std::string label;
+  Integrator integrator;
+  int iterations;  // vie_iterations (constraint-based solvers)
+};
+
+struct Reached {
+  double seconds = -1;  // -1: not within the cap
+  std::uint64_t steps = 0;
+};
+
+struct Outcome {
+  Reached coarse, fine;  // 1e-3 N, 1e-6 N
+  double last_residual = 0;
+  std::string error;
+};
+
+Outcome solve(int side, const Variant& v, double cap, int threads) {
+  auto model = build_net(side);
+  Solver solver(*model);
+  solver.settings.integrator = v.integrator;
+  solver.settings.vie_iterations = v.iterations;
+  solver.settings.threads = threads;
+  Outcome o;
+  const auto t0 = Clock::now();
+  try {
+    for (std::uint64_t steps = 1;; ++steps) {
+      solver.step();
+      const double t = seconds_since(t0);
+      const double worst = std::max(solver.residual(), solver.motion());
+      if (o.coarse.seconds < 0 && worst < 1e-3) o.coarse = {t, steps};
+      if (worst < 1e-6) {
+        o.fine = {t, steps};
+        break;
+      }
+      if (t > cap) break;
+    }
+  } catch (const std::exception& e) {
+    o.error = e.what();
+  }
+  o.last_residual = solver.residual();
+  return o;
+}
+
+std::string cell(const Reached& r, double cap) {
+  return r.seconds < 0 ? fmt("> %.0f s", cap) : fmt("%.3f s", r.seconds);
+}
+std::string steps_cell(const Reached& r) { return r.seconds < 0 ? "-" : fmt("%llu", (unsigned long long)r.steps); }
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    std::size_t comma = list.find(',', start);
+    if (comma == std::string::npos) comma = list.size();
+    if (comma > start) out.push_back(list.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return out;
+}
+
+int usage(const char* argv0, int code) {
+  std::fprintf(code ? stderr : stdout,
+               "usage: %s [--sides 128,500] [--cap SECONDS] [--threads N] [--integrators a,b,...]\n"
+               "  --sides        grid sides (s x s particles; default 128,500)\n"
+               "  --cap          wall-time limit of each run (default 60 s)\n"
+               "  --threads      solver threads (default 1)\n"
+               "  --integrators  leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective,\n"
+               "                 projective1 (one local-global iteration per step), mixed (default: all)\n",
+               argv0);
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<int> sides{128, 500};
+  double cap = 60;
+  int threads = 1;
+  std::vector<Variant> variants;
+  for (Integrator i : kIntegrators) variants.push_back({integrator_name(i), i, 4});
+  variants.push_back({"vie", Integrator::VariationalImplicitEuler, 4});
+  variants.push_back({"projective", Integrator::ProjectiveDynamics, 4});
+  variants.push_back({"projective1", Integrator::ProjectiveDynamics, 1});
+  variants.push_back({"mixed", Integrator::Mixed, 4});
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string a = argv[i];
+      auto value = [&]() -> std::string {
+        if (i + 1 >= argc) throw std::runtime_error(a + " needs a value");
+        return argv[++i];
+      };
+      if (a == "--sides") {
+        sides.clear();
+        for (const std::string& s : split(value())) sides.push_back(std::stoi(s));
+      } else if (a == "--cap") cap = std::stod(value());
+      else if (a == "--threads") threads = std::stoi(value());
+      else if (a == "--integrators") {
+        std::vector<Variant> chosen;
+        for (const std::string& name : split(value())) {
+          auto it = std::find_if(variants.begin(), variants.end(), [&](const Variant& v) { return v.label == name; });
+          if (it == variants.end()) throw std::runtime_error("unknown integrator '" + name + "'");
+          chosen.push_back(*it);
+        }
+        variants = chosen;
+      } else if (a == "-h" || a == "--help") return usage(argv[0], 0);
+      else throw std::runtime_error("unknown option '" + a + "'");
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_net: %s\n", e.what());
+    return usage(argv[0], 2);
+  }
+
+  std::puts("bench_net: time to equilibrium of the issue-18 net, every integrator from the flat net");
+  std::puts("  s x s particles 1 m apart, bars on the grid edges (EA = 1e5 N, prestress 1e3 N), boundary locked,");
+  std::puts("  1 N in -z on every interior particle; kinetic damping, default settings (dt = 1, fictitious masses)");
+  std::puts("  reached: residual (largest force on a free axis) and motion() both below the tolerance, as Solver::run");
+  std::printf("  wall time from the first step (factorisations included); cap %.0f s per run; %d thread(s)%s\n\n", cap,
+              threads,
+#ifdef NDEBUG
+              ""
+#else
+              "   ** WARNING: built without NDEBUG (not a Release build) **"
+#endif
+  );
+  bool failed = false;
+  for (int side : sides) {
+    std::printf("%d x %d (%d particles)\n", side, side, side * side);
+    Table table({"integrator", "to 1e-3 N", "steps", "to 1e-6 N", "steps", "last residual N", "note"});
+    for (const Variant& v : variants) {
+      const Outcome o = solve(side, v, cap, threads);
+      std::string note = o.error.empty() ? "" : "error: " + o.error.substr(0, 60);
+      if (v.integrator == Integrator::Leapfrog) note = note.empty() ? "default" : note;
+      failed |= !o.error.empty();
+      table.add({v.label, cell(o.coarse, cap), steps_cell(o.coarse), cell(o.fine, cap), steps_cell(o.fine),
+                 fmt("%.2e", o.last_residual), note});
+    }
+    table.print();
+    std::printf("load average %.2f\n\n", load_average());
+  }
+  return failed ? 1 : 0;
+}
