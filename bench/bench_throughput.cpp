@@ -8,7 +8,7 @@
 // their quotient the particle-iterations per second memory allows; the
 // fraction is tendril's share of that bound, all in the same run.
 //
-//   bench_throughput [--sizes 10K,100K,1M] [--seconds 1.5] [--threads 1,2]
+//   bench_throughput [--sizes 10K,100K,1M] [--seconds 1.5] [--threads 1,2] [--bound-only]
 #include <malloc.h>
 #include <unistd.h>
 
@@ -211,10 +211,11 @@ Measurement measure(const Case& c, std::size_t requested, double target_seconds,
 
 int usage(const char* argv0, int code) {
   std::fprintf(code ? stderr : stdout,
-               "usage: %s [--sizes 10K,100K,1M] [--seconds S] [--threads 1,2]\n"
+               "usage: %s [--sizes 10K,100K,1M] [--seconds S] [--threads 1,2] [--bound-only]\n"
                "  --sizes    particle counts (K/M suffixes; each becomes the nearest square grid)\n"
                "  --seconds  target duration of each timed run (default 1.5)\n"
-               "  --threads  thread counts of the memory-bound table (default 1,2)\n",
+               "  --threads  thread counts of the memory-bound table (default 1,2)\n"
+               "  --bound-only  the memory-bound table alone\n",
                argv0);
   return code;
 }
@@ -225,6 +226,7 @@ int main(int argc, char** argv) {
   std::vector<std::size_t> sizes{10'000, 100'000, 1'000'000};
   double target_seconds = 1.5;
   std::vector<std::size_t> thread_counts{1, 2};
+  bool bound_only = false;
   try {
     for (int i = 1; i < argc; ++i) {
       std::string a = argv[i];
@@ -234,6 +236,7 @@ int main(int argc, char** argv) {
       };
       if (a == "--sizes") sizes = parse_sizes(value());
       else if (a == "--seconds") target_seconds = std::stod(value());
+      else if (a == "--bound-only") bound_only = true;
       else if (a == "--threads") {
         thread_counts = parse_sizes(value());
         for (std::size_t t : thread_counts)
@@ -269,10 +272,12 @@ int main(int argc, char** argv) {
   // with every thread count, wall time (the threads' work included).
   std::printf("bar net against the memory bound (issue 18), wall time; load average %.2f at the start\n", load_average());
   std::puts("  triad = STREAM a = b + s c, best of 10, GB/s; B/p-it = Solver::fused_step_bytes() / particles;");
-  std::puts("  bound = triad / (B/p-it); fraction = measured / bound; speed-up = this row / its 1-thread row");
+  std::puts("  bound = triad / (B/p-it); fraction = measured / bound; speed-up = this row / its 1-thread row;");
+  std::puts("  cpu M p-it/s = over the thread's CPU time (1 thread: what a loaded machine's time-slicing leaves out)");
   std::vector<double> triad(thread_counts.size());
   for (std::size_t t = 0; t < thread_counts.size(); ++t) triad[t] = triad_gbs(unsigned(thread_counts[t]));
-  Table bound({"particles", "threads", "triad GB/s", "B/p-it", "bound M p-it/s", "M p-it/s", "fraction", "speed-up"});
+  Table bound({"particles", "threads", "triad GB/s", "B/p-it", "bound M p-it/s", "M p-it/s", "fraction", "speed-up",
+               "cpu M p-it/s"});
   std::string failure;
   for (std::size_t n : sizes) {
     double single = 0;
@@ -284,12 +289,21 @@ int main(int argc, char** argv) {
       if (t == 0) single = pit;
       bound.add({fmt("%zu", r.particles), fmt("%zu", thread_counts[t]), fmt("%.1f", triad[t]), fmt("%.0f", bytes),
                  fmt("%.1f", limit / 1e6), fmt("%.1f", pit / 1e6), fmt("%.0f %%", 100 * pit / limit),
-                 fmt("%.2f", pit / single)});
+                 fmt("%.2f", pit / single),
+                 thread_counts[t] == 1 ? fmt("%.1f", double(r.particles) * double(r.steps) / r.seconds / 1e6) : "-"});
       if (!r.check.empty() && failure.empty()) failure = fmt("bar net %zu threads %zu: ", r.particles, thread_counts[t]) + r.check;
     }
   }
   bound.print();
   std::printf("load average %.2f at the end\n", load_average());
+  if (bound_only) {
+    if (!failure.empty()) {
+      std::printf("check: FAILED (%s)\n", failure.c_str());
+      return 1;
+    }
+    std::puts("check: ok");
+    return 0;
+  }
   std::puts("\none thread, thread CPU time:");
 
   Table table({"case", "particles", "bars", "hinges", "build s", "steps", "cpu s", "M p-it/s", "ns/p-step",

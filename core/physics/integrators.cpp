@@ -134,10 +134,20 @@ bool Solver::fused_kick_drift_applies() const {
 // the step cannot use is found only after some velocities were kicked:
 // the velocities are reset, prepare_masses names the particle as for the
 // other integrators, and no particle was moved.
+// When every particle slot is integrated (no passive or free slot whose
+// position would have to be carried over), the drift happens in the same
+// pass: each kicked particle's new position x + dt v goes into xs_, the
+// bars keep reading the old ones, and xs_ becomes the model's positions by
+// a swap once the step is known to be an ordinary one. A kinetic peak or an
+// error leaves the old positions as they were, so every path computes what
+// the two-pass form computes, bit for bit.
 void Solver::fused_kick_drift(bool whole_kick) {
   Particles& P = model_.particles;
   const BarChunks& chunks = bar_chunks();
   chunk_sums_.resize(chunks.chunks.size());
+  const bool one_pass = P.integrated.size() == P.capacity();
+  if (one_pass && xs_.size() != P.capacity()) xs_.resize(P.capacity());
+  Vec3* xn = one_pass ? xs_.data() : nullptr;
   const bool physical = settings.mass_mode == MassMode::Physical;
   const double mass_scale =
       settings.mass_factor * fictitious_mass_scale(settings.integrator) * 0.5 * settings.dt * settings.dt;  // eq. 3.4
@@ -171,6 +181,7 @@ void Solver::fused_kick_drift(bool whole_kick) {
       v[p] = (keep * v[p] + (first * B * dt / M) * F[p]).cwiseProduct(free);  // eq. 3.11 / 3.26
       sums.ke += M * v[p].squaredNorm();                                      // eq. 3.28
       sums.momentum2 = std::max(sums.momentum2, M * M * v[p].squaredNorm());
+      if (xn) xn[p] = x[p] + dt * v[p];  // eq. 3.12, taken only if the step is an ordinary one
     }
     chunk_sums_[c] = sums;
   };
@@ -213,13 +224,16 @@ void Solver::fused_kick_drift(bool whole_kick) {
     record_reset();
     return;
   }
-  for_chunks([&](std::uint32_t c) {
-    const BarChunks::Chunk& ch = chunks.chunks[c];
-    for (std::uint32_t n = ch.particles_begin; n < ch.particles_end; ++n) {
-      const ParticleId p = chunks.particles[n];
-      x[p] += dt * v[p];  // eq. 3.12
-    }
-  });
+  if (one_pass)
+    std::swap(P.position.raw(), xs_);  // the drift was done in the kick's pass
+  else
+    for_chunks([&](std::uint32_t c) {
+      const BarChunks::Chunk& ch = chunks.chunks[c];
+      for (std::uint32_t n = ch.particles_begin; n < ch.particles_end; ++n) {
+        const ParticleId p = chunks.particles[n];
+        x[p] += dt * v[p];  // eq. 3.12
+      }
+    });
   record_energy(ke, momentum2);
   half_step_ = true;
 }
@@ -228,16 +242,24 @@ void Solver::fused_kick_drift(bool whole_kick) {
 double Solver::fused_step_bytes() const {
   if (!fused_kick_drift_applies()) return 0;
   const BarChunks& B = bar_chunks();
+  const Particles& P = model_.particles;
   const double particles = double(B.particles.size()), bars = double(B.i.size()),
                crossing = double(B.slot_force.size());
+  const Vec3 g = model_.gravity;
+  const bool masses = settings.mass_mode == MassMode::Physical || !(g.x() == 0 && g.y() == 0 && g.z() == 0 &&
+                                                                    !std::signbit(g.x()) && !std::signbit(g.y()) &&
+                                                                    !std::signbit(g.z()));
+  const bool one_pass = P.integrated.size() == P.capacity();
   // Forces and kick, per particle: its id, load, point and lumped mass (the
-  // weight), force and stiffness written, lock, position gathered by the
-  // bars, velocity read and written.
-  const double kick = particles * (4 + 24 + 8 + 8 + 24 + 8 + 1 + 24 + 24 + 24);
+  // weight or the physical mass, else not read), force and stiffness
+  // written, lock, position gathered by the bars, velocity read and
+  // written, in one pass the new position written.
+  const double kick = particles * (4 + 24 + (masses ? 16 : 0) + 24 + 8 + 1 + 24 + 24 + 24 + (one_pass ? 24 : 0));
   // Per bar its ends, k, rest length, prestress and cable flag; per crossing
   // bar its slot written, then read through the inbox (particle, slot).
   const double elements = bars * (4 + 4 + 8 + 8 + 8 + 1) + crossing * (24 + 8 + 4 + 4 + 24 + 8);
-  const double drift = particles * (4 + 24 + 24 + 24);  // id, position read and written, velocity
+  // Two passes: id, position read and written, velocity read.
+  const double drift = one_pass ? 0 : particles * (4 + 24 + 24 + 24);
   return kick + elements + drift;
 }
 
