@@ -71,10 +71,24 @@ int l_summary(lua_State* L) {
     if (!slack) max_strain = std::max(max_strain, std::abs(L - b.rest_length) / b.rest_length);
     if (m.blocks[m.dart_block[b.dart]].kind == BlockKind::Beam) beam_length += L;
   }
-  for (const Hinge& h : m.hinges.items) {
-    const Vec3 a = x[h.j] - x[h.i], c = x[h.k] - x[h.j];
+  // The radius of the circle through three consecutive particles of a beam
+  // (eq. 3.41's Lc / 2 sin alpha).
+  auto bend = [&](ParticleId i, ParticleId j, ParticleId k) {
+    const Vec3 a = x[j] - x[i], c = x[k] - x[j];
     const double sin_alpha = a.cross(c).norm() / (a.norm() * c.norm());
-    if (sin_alpha > 0) min_radius = std::min(min_radius, (x[h.k] - x[h.i]).norm() / (2 * sin_alpha));
+    if (sin_alpha > 0) min_radius = std::min(min_radius, (x[k] - x[i]).norm() / (2 * sin_alpha));
+  };
+  for (const Hinge& h : m.hinges.items) bend(h.i, h.j, h.k);
+  // 6-DOF beams have no hinges and no bars: their vertices and segments
+  // from the path (a ring round its closure too).
+  for (const Beam6& b : m.beam6s.items) beam_length += (x[b.j] - x[b.i]).norm();
+  for (const BlockId b : m.live_blocks()) {
+    if (m.blocks[b].kind != BlockKind::Beam || m.blocks[b].dofs != 6) continue;
+    const std::vector<ParticleId> ps = m.particles_of(b);
+    const std::size_t n = ps.size();
+    const bool closed = m.blocks[b].closed;
+    for (std::size_t k = closed ? 0 : 1; n >= 3 && k + (closed ? 0 : 1) < n; ++k)
+      bend(ps[(k + n - 1) % n], ps[k], ps[(k + 1) % n]);
   }
   lua_createtable(L, 0, 8);
   auto set = [&](const char* k, double v) {
