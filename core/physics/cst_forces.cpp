@@ -26,8 +26,8 @@
 // (sides 1 and 2 of the triangles) pull it with one force density, the
 // mean of sigma_warp and sigma_weft [N/m] (one for both directions, so that
 // unequal stresses do not squash the quads), and it takes their component
-// in its tangent plane only. They move a vertex within the surface, never across
-// it, so the shape is that of the membrane; they keep the mesh as regular
+// in its tangent plane only. They move a vertex within the surface, never
+// across it, so the shape is that of the membrane; they keep the mesh as regular
 // as the boundary allows while the boundary moves (a bending-active arch
 // deflecting under the membrane) or the surface grows far from its start
 // (a minimal surface from a flat sheet), and they carry what a load has in
@@ -76,7 +76,7 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
     const Vec3 a = x[t.j] - x[t.i], b = x[t.k] - x[t.i], side3 = x[t.k] - x[t.j];
     const std::uint8_t along_normal = analysis ? 0 : t.interior;
     if (along_normal) {  // the G-strings: side 1 (i -> j) warp, side 2 (j -> k) weft
-      auto string = [&](ParticleId u, int cu, ParticleId v, int cv, const Vec3& uv, double q) {
+      auto g_string = [&](ParticleId u, int cu, ParticleId v, int cv, const Vec3& uv, double q) {
         if (along_normal >> cu & 1) {
           cst_smooth_[u] += q * uv;
           S[u] += q;
@@ -87,8 +87,8 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
         }
       };
       const double q = 0.5 * (m.sigma_warp + m.sigma_weft);
-      string(t.i, 0, t.j, 1, a, q);
-      string(t.j, 1, t.k, 2, side3, q);
+      g_string(t.i, 0, t.j, 1, a, q);
+      g_string(t.j, 1, t.k, 2, side3, q);
       gathered = true;
     }
     const Vec3 n = a.cross(b);
