@@ -13,6 +13,7 @@
 #include <numbers>
 
 #include "case.hpp"
+#include "cases/soap_film.hpp"
 #include "model/model.hpp"
 
 namespace tendril::validate {
@@ -55,10 +56,7 @@ inline Outcome run_catenoid(const Setting& setting, double h) {
       triangles.push_back({cc, d, a});
     }
   const BlockId tube = m.add_patch(quads, Section{1, 0, 0, 0});
-  Membrane film;
-  film.mode = Membrane::FormFinding;
-  film.sigma_warp = film.sigma_weft = 1;  // N/m
-  m.set_patch_formulation(tube, film, triangles);
+  make_soap_film(m, tube, 1, triangles);  // N/m
 
   Solver solver(m);
   solver.settings = setting.solver;

@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "case.hpp"
+#include "cases/soap_film.hpp"
 #include "cases/disc_mesh.hpp"
 
 namespace tendril::validate {
@@ -28,10 +29,7 @@ Outcome run_ring(const Setting& setting) {
   const BlockId patch = m.add_quad_grid(d.grid, d.n + 1, d.n + 1, Section{1e-3, 0, 0, 0});
   m.set_lock(d.centre(), kLockTranslation);  // no rigid-body motion: the disc is symmetric about it
   for (ParticleId p : d.grid) m.set_lock(p, kLockZ);
-  Membrane film;
-  film.mode = Membrane::FormFinding;
-  film.sigma_warp = film.sigma_weft = kSigma;
-  m.set_patch_formulation(patch, film, d.triangles);
+  make_soap_film(m, patch, kSigma, d.triangles);
   Solver solver(m);
   solver.settings = setting.solver;
   Outcome out = relax(solver, 1e-6, 2'000'000);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "case.hpp"
+#include "cases/soap_film.hpp"
 #include "cases/disc_mesh.hpp"
 
 namespace tendril::validate {
@@ -20,10 +21,7 @@ Outcome run_cap(const Setting& setting) {
   const DiscMesh d = disc_mesh(m, setting.segments, kRadius);
   for (ParticleId p : d.boundary) m.set_lock(p, kLockTranslation);
   const BlockId patch = m.add_quad_grid(d.grid, d.n + 1, d.n + 1, Section{1, 0, 0, 0});
-  Membrane film;
-  film.mode = Membrane::FormFinding;
-  film.sigma_warp = film.sigma_weft = kSigma;
-  m.set_patch_formulation(patch, film, d.triangles);
+  make_soap_film(m, patch, kSigma, d.triangles);
   m.set_pressure(patch, kPressure, Vec3(0, 0, 1));
   Solver solver(m);
   solver.settings = setting.solver;

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "case.hpp"
+#include "cases/soap_film.hpp"
 #include "model/model.hpp"
 
 namespace tendril::validate {
@@ -39,10 +40,7 @@ Outcome run_scherk(const Setting& setting) {
       triangles.push_back({at(r, c), at(r, c + 1), at(r + 1, c + 1)});
       triangles.push_back({at(r + 1, c + 1), at(r + 1, c), at(r, c)});
     }
-  Membrane film;
-  film.mode = Membrane::FormFinding;
-  film.sigma_warp = film.sigma_weft = 1;  // N/m
-  m.set_patch_formulation(patch, film, triangles);
+  make_soap_film(m, patch, 1, triangles);  // N/m
   Solver solver(m);
   solver.settings = setting.solver;
   Outcome out = relax(solver, 1e-8, 2'000'000);
