@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "lua_args.hpp"
+#include "query/element_results.hpp"
 #include "query/member_forces.hpp"
 #include "lua_commands.hpp"
 #include "lua_rules.hpp"
@@ -114,7 +115,7 @@ int l_forces(lua_State* L) {
   Scene& s = check_scene(L, fn);
   const BlockId b = check_block(L, 2, s, fn);
   if (s.model.blocks[b].kind == BlockKind::Beam && s.model.blocks[b].dofs == 6)
-    arg_error(fn, 2, "a 6-DOF beam's forces are not available yet (switch it to 3 DOF: m:formulation(beam, 3))");
+    arg_error(fn, 2, "a 6-DOF beam: read its forces with m:results(beam)");
   const MemberForces f = member_forces(s.model, b);
   auto number = [&](const char* key, double x) { lua_pushnumber(L, x), lua_setfield(L, -2, key); };
   lua_createtable(L, 0, 2);
@@ -144,6 +145,122 @@ int l_forces(lua_State* L) {
     lua_rawseti(L, -2, lua_Integer(k + 1));
   }
   lua_setfield(L, -2, "vertices");
+  return 1;
+}
+
+// m:results(block [, section]): what every element of the block carries now
+// (query/element_results.hpp), docs/lua-api.md "Results". `section`: a
+// table with A, Wy, Wz (tendril.section.*) and optionally strength, for the
+// stress and utilisation of a beam.
+int l_results(lua_State* L) {
+  const char* fn = "results";
+  Scene& s = check_scene(L, fn);
+  const BlockId b = check_block(L, 2, s, fn);
+  StressSection sec;
+  const bool has_section = !lua_isnoneornil(L, 3);
+  if (has_section) {
+    check_table(L, 3, fn);
+    for (const char* key : {"A", "Wy", "Wz"}) {
+      if (!has_field(L, 3, key)) key_error(fn, key, "is required in the section (tendril.section.rod/tube/rect give it)");
+      if (!(field_number(L, 3, key, fn, 0) > 0)) key_error(fn, key, "must be > 0");
+    }
+    sec.A = field_number(L, 3, "A", fn, 0);
+    sec.Wy = field_number(L, 3, "Wy", fn, 0);
+    sec.Wz = field_number(L, 3, "Wz", fn, 0);
+    sec.strength = field_number(L, 3, "strength", fn, 0);
+    if (sec.strength < 0 || !std::isfinite(sec.strength)) key_error(fn, "strength", "must be >= 0 [Pa]");
+  }
+  const BlockResults r = element_results(s.model, b, has_section ? &sec : nullptr);
+  auto number = [&](const char* key, double x) { lua_pushnumber(L, x), lua_setfield(L, -2, key); };
+  double max_axial = 0, max_moment = 0, max_stress = 0, max_utilisation = 0;
+  lua_createtable(L, 0, 8);
+  lua_createtable(L, int(r.lines.size()), 0);
+  for (std::size_t k = 0; k < r.lines.size(); ++k) {
+    const LineResult& e = r.lines[k];
+    lua_createtable(L, 0, 14);
+    push_particle(L, s, e.a);
+    lua_setfield(L, -2, "a");
+    push_particle(L, s, e.b);
+    lua_setfield(L, -2, "b");
+    number("axial", e.axial);
+    number("strain", e.strain);
+    lua_pushboolean(L, e.slack);
+    lua_setfield(L, -2, "slack");
+    number("My", e.My);
+    number("Mz", e.Mz);
+    number("torsion", e.torsion);
+    number("moment", e.moment);
+    number("curvature", e.curvature);
+    number("radius", e.radius);
+    if (!std::isnan(e.stress)) number("stress", e.stress);
+    if (!std::isnan(e.utilisation)) number("utilisation", e.utilisation);
+    lua_rawseti(L, -2, lua_Integer(k + 1));
+    max_axial = std::max(max_axial, std::abs(e.axial));
+    max_moment = std::max(max_moment, e.moment);
+    if (!std::isnan(e.stress)) max_stress = std::max(max_stress, e.stress);
+    if (!std::isnan(e.utilisation)) max_utilisation = std::max(max_utilisation, e.utilisation);
+  }
+  lua_setfield(L, -2, "elements");
+  lua_createtable(L, int(r.vertices.size()), 0);
+  for (std::size_t k = 0; k < r.vertices.size(); ++k) {
+    const VertexResult& v = r.vertices[k];
+    lua_createtable(L, 0, 4);
+    push_particle(L, s, v.p);
+    lua_setfield(L, -2, "particle");
+    number("curvature", v.curvature);
+    number("moment", v.moment);
+    number("radius", v.radius);
+    lua_rawseti(L, -2, lua_Integer(k + 1));
+  }
+  lua_setfield(L, -2, "vertices");
+  lua_createtable(L, int(r.triangles.size()), 0);
+  for (std::size_t k = 0; k < r.triangles.size(); ++k) {
+    const TriangleResult& t = r.triangles[k];
+    lua_createtable(L, 0, 10);
+    lua_createtable(L, 3, 0);
+    const ParticleId corners[3] = {t.i, t.j, t.k};
+    for (int c = 0; c < 3; ++c) {
+      push_particle(L, s, corners[c]);
+      lua_rawseti(L, -2, c + 1);
+    }
+    lua_setfield(L, -2, "particles");
+    number("warp", t.warp);
+    number("weft", t.weft);
+    number("shear", t.shear);
+    number("s1", t.s1);
+    number("s2", t.s2);
+    push_vec3(L, t.d1);
+    lua_setfield(L, -2, "d1");
+    push_vec3(L, t.d2);
+    lua_setfield(L, -2, "d2");
+    lua_rawseti(L, -2, lua_Integer(k + 1));
+  }
+  lua_setfield(L, -2, "triangles");
+  number("max_axial", max_axial);
+  number("max_moment", max_moment);
+  if (has_section) number("max_stress", max_stress);
+  if (has_section && sec.strength > 0) number("max_utilisation", max_utilisation);
+  return 1;
+}
+
+// m:reactions() -> {{particle =, force = {x, y, z}, moment = {x, y, z}}, ...}:
+// every locked particle's support reaction (Solver::reaction), in id order.
+int l_reactions(lua_State* L) {
+  Scene& s = check_scene(L, "reactions");
+  const Particles& P = s.model.particles;
+  lua_newtable(L);
+  lua_Integer n = 0;
+  for (ParticleId p = 0; p < P.capacity(); ++p) {
+    if (!P.valid(p) || !P.lock[p]) continue;
+    lua_createtable(L, 0, 3);
+    push_particle(L, s, p);
+    lua_setfield(L, -2, "particle");
+    push_vec3(L, s.solver.reaction(p));
+    lua_setfield(L, -2, "force");
+    push_vec3(L, s.solver.reaction_moment(p));
+    lua_setfield(L, -2, "moment");
+    lua_rawseti(L, -2, ++n);
+  }
   return 1;
 }
 
@@ -200,6 +317,8 @@ void add_query_methods(lua_State* L) {
   set_fn<l_references>(L, "references");
   set_fn<l_summary>(L, "summary");
   set_fn<l_forces>(L, "forces");
+  set_fn<l_results>(L, "results");
+  set_fn<l_reactions>(L, "reactions");
   set_fn<l_joint>(L, "joint");
   set_fn<l_joint_angle>(L, "joint_angle");
 }

@@ -1,0 +1,174 @@
+// m:results and m:reactions (issue 14) against hand calculations: a 6-DOF
+// cantilever under a tip moment (M constant, sigma = M / W), a twisted
+// 6-DOF bar (T = GJ phi / L), a CST square under uniaxial strain (the
+// plane-stress law), a cable pair at an angle (N from statics), a 3-DOF
+// beam's moment, and the principal stresses of Mohr's circle.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "lua_host.hpp"
+#include "query/element_results.hpp"
+
+using namespace tendril;
+
+namespace {
+
+std::string run(const std::string& name, const std::string& code) {
+  const auto dir = std::filesystem::temp_directory_path() / "tendril-test-results";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name) << code;
+  SceneOptions options;
+  options.progress = false;
+  options.out_dir = (dir / "out").string();
+  std::string error;
+  run_scene((dir / name).string(), options, &error);
+  return error;
+}
+
+}  // namespace
+
+TEST_CASE("principal stresses: Mohr's circle of (sx, sy, tau)") {
+  double s1, s2, angle;
+  principal_stresses(3, 1, 0, s1, s2, angle);
+  CHECK(s1 == doctest::Approx(3));
+  CHECK(s2 == doctest::Approx(1));
+  CHECK(angle == doctest::Approx(0));
+  principal_stresses(0, 0, 2, s1, s2, angle);  // pure shear: +-tau at 45 degrees
+  CHECK(s1 == doctest::Approx(2));
+  CHECK(s2 == doctest::Approx(-2));
+  CHECK(angle == doctest::Approx(M_PI / 4));
+}
+
+TEST_CASE("m:results: a 6-DOF cantilever under a tip moment carries M everywhere, stress M / W") {
+  // GFRP rod d = 12 mm, L = 1 m, M = 10 N m: kappa = M / EI = 0.393 1/m,
+  // sigma = M / W = 10 / (pi 0.012^3 / 32) = 58.95 MPa, 14.7 % of 400 MPa.
+  CHECK(run("cantilever.lua", R"(
+local rod = tendril.section.rod{ d = 0.012, material = "gfrp" }
+local m = tendril.model()
+local pts = {}
+for i = 0, 10 do pts[#pts + 1] = { i / 10, 0, 0 } end
+local b = m:beam{ points = pts, EA = rod.EA, EI = rod.EI, GJ = rod.GJ, dofs = 6 }
+local ps = m:particles(b)
+m:lock(ps[1], "full")
+local M = 10
+m:torque(ps[#ps], { 0, 0, M })
+assert(m:run{ tolerance = 1e-7, max_steps = 200000 }.converged, "did not converge")
+local r = m:results(b, rod)
+assert(#r.elements == 10)
+local sigma = M / rod.Wz
+for k, e in ipairs(r.elements) do
+  assert(math.abs(e.moment - M) < 0.01 * M, k .. ": moment " .. e.moment)
+  assert(math.abs(math.abs(e.Mz) - M) < 0.01 * M and math.abs(e.My) < 1e-3 * M, k .. ": Mz " .. e.Mz .. " My " .. e.My)
+  assert(math.abs(e.curvature - M / rod.EI) < 0.01 * M / rod.EI, k .. ": curvature " .. e.curvature)
+  assert(math.abs(e.radius - rod.EI / M) < 0.01 * rod.EI / M)
+  assert(math.abs(e.stress - sigma) < 0.01 * sigma, k .. ": stress " .. e.stress .. " vs " .. sigma)
+  assert(math.abs(e.utilisation - sigma / rod.strength) < 0.01 * sigma / rod.strength)
+  assert(math.abs(e.torsion) < 1e-3 * M)
+end
+assert(math.abs(r.max_stress - sigma) < 0.01 * sigma and math.abs(r.max_utilisation - sigma / 400e6) < 0.01 * sigma / 400e6)
+-- The clamp takes the moment back.
+local rs = m:reactions()
+assert(#rs == 1 and rs[1].particle == ps[1])
+assert(math.abs(rs[1].moment[3] + M) < 0.01 * M, "reaction moment " .. rs[1].moment[3])
+-- Without a section: forces and moments, no stress.
+local plain = m:results(b)
+assert(plain.elements[1].stress == nil and plain.max_stress == nil and math.abs(plain.max_moment - M) < 0.01 * M)
+)") == "");
+}
+
+TEST_CASE("m:results: a twisted 6-DOF bar carries T = GJ phi / L") {
+  CHECK(run("twist.lua", R"(
+local m = tendril.model()
+local pts = {}
+for i = 0, 8 do pts[#pts + 1] = { 2 * i / 8, 0, 0 } end
+local GJ, L = 40, 2
+local b = m:beam{ points = pts, EA = 1e6, EI = 100, GJ = GJ, dofs = 6 }
+local ps = m:particles(b)
+m:lock(ps[1], "full")
+local T = 0.2   -- phi = T L / GJ = 0.01 rad
+m:torque(ps[#ps], { T, 0, 0 })
+assert(m:run{ tolerance = 1e-9, max_steps = 200000 }.converged, "did not converge")
+local _, y = m:orientation(ps[#ps])
+local phi = math.atan(y[3], y[2])
+assert(math.abs(phi - T * L / GJ) < 0.01 * T * L / GJ, "phi " .. phi)
+for k, e in ipairs(m:results(b).elements) do
+  assert(math.abs(e.torsion - GJ * phi / L) < 0.01 * T, k .. ": torsion " .. e.torsion .. " vs " .. GJ * phi / L)
+  assert(math.abs(e.moment) < 1e-3 * T, k .. ": moment " .. e.moment)
+end
+)") == "");
+}
+
+TEST_CASE("m:results: a CST square under uniaxial strain has the plane-stress law's principal stresses") {
+  // eps_x = 1 %, eps_y = 0: sigma_x = dxx eps = 8 N/m, sigma_y = dyx eps =
+  // 2.4 N/m, no shear; s1 along x.
+  CHECK(run("cst.lua", R"(
+local m = tendril.model()
+local function row(y) local ps = {} for i = 0, 3 do ps[#ps + 1] = m:particle{ i / 3, y, 0 } end return ps end
+local patch = m:project{ from = row(0), to = row(1), rows = 3, EA = 10 }
+m:formulation(patch, "cst", { stress = { 0, 0 }, warp = { 1, 0, 0 }, analysis = { dxx = 800, dyy = 600, dxy = 240, dyx = 240, G = 30 } })
+for _, p in ipairs(m:particles(patch)) do local x = m:position(p) m:set_position(p, { 1.01 * x[1], x[2], x[3] }) end
+local r = m:results(patch)
+assert(#r.triangles == 24, #r.triangles)  -- rows = 3 between the two rows: 4 x 3 quads
+for k, t in ipairs(r.triangles) do
+  assert(math.abs(t.warp - 8) < 1e-9 and math.abs(t.weft - 2.4) < 1e-9 and math.abs(t.shear) < 1e-9, k .. ": " .. t.warp .. " " .. t.weft .. " " .. t.shear)
+  assert(math.abs(t.s1 - 8) < 1e-9 and math.abs(t.s2 - 2.4) < 1e-9)
+  assert(math.abs(math.abs(t.d1[1]) - 1) < 1e-9 and math.abs(math.abs(t.d2[2]) - 1) < 1e-9)
+end
+)") == "");
+}
+
+TEST_CASE("m:results: a cable pair at an angle carries N = P / (2 sin theta); a slack cable is flagged") {
+  CHECK(run("cables.lua", R"(
+local m = tendril.model()
+local a, b, c = m:particle{ -1, 0, 0 }, m:particle{ 1, 0, 0 }, m:particle{ 0, 0, -0.5 }
+local left, right = m:cable(a, c, { EA = 1e6 }), m:cable(c, b, { EA = 1e6 })
+local d = m:particle{ 0, 0, -2 }
+local loose = m:cable(c, d, { EA = 1e6, rest_length = 3 })
+m:lock(a, "xyz") m:lock(b, "xyz") m:lock(d, "xyz")
+local P = 1000
+m:load(c, { 0, 0, -P })
+assert(m:run{ tolerance = 1e-6, max_steps = 200000 }.converged, "did not converge")
+local x = m:position(c)
+local sin = -x[3] / math.sqrt(1 + x[3]^2)
+local N = P / (2 * sin)
+for _, cable in ipairs{ left, right } do
+  local e = m:results(cable).elements[1]
+  assert(math.abs(e.axial - N) < 1e-3 * N, "N " .. e.axial .. " vs " .. N)
+  assert(not e.slack and math.abs(e.strain - e.axial / 1e6) < 1e-9)
+end
+local s = m:results(loose).elements[1]
+assert(s.slack and s.axial == 0 and s.strain < 0)
+local reactions = m:reactions()
+assert(#reactions == 3)
+for _, r in ipairs(reactions) do
+  if r.particle ~= d then assert(math.abs(r.force[3] - P / 2) < 1e-3 * P, "reaction " .. r.force[3]) end
+end
+)") == "");
+}
+
+TEST_CASE("m:results: a 3-DOF beam's links carry the larger moment of their vertices, and its stress") {
+  // A simply supported beam under a central load: M = P L / 4 at mid-span.
+  CHECK(run("beam3.lua", R"(
+local rod = tendril.section.rod{ d = 0.02, material = "steel" }
+local m = tendril.model()
+local pts = {}
+for i = 0, 20 do pts[#pts + 1] = { i / 10, 0, 0 } end
+local b = m:beam{ points = pts, EA = rod.EA, EI = rod.EI }
+local ps = m:particles(b)
+m:lock(ps[1], "xyz") m:lock(ps[#ps], "yz")
+for _, p in ipairs(ps) do m:lock(p, "y") end
+local P = 100
+m:load(ps[11], { 0, 0, -P })
+assert(m:run{ tolerance = 1e-6, max_steps = 400000 }.converged, "did not converge")
+local r = m:results(b, rod)
+local M = P * 2 / 4
+assert(math.abs(r.max_moment - M) < 0.01 * M, "moment " .. r.max_moment)
+assert(math.abs(r.max_stress - M / rod.Wy) < 0.01 * M / rod.Wy, "stress " .. r.max_stress)
+assert(#r.vertices == 19 and #r.elements == 20)
+local ok, err = pcall(m.results, m, b, { A = 1 })
+assert(not ok and err:find("Wy"), err)
+)") == "");
+}
