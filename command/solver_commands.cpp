@@ -82,6 +82,12 @@ void declare_solver(std::vector<Command>& out) {
   Command open{"open", "a model database (XML) to start from", Effect::Topology,
                {{"path", Type::Path, "the file"}}, Returns::Nothing, [](Target& t, Args& a) {
                  load_model_xml(a[0].word, t.model, t.solver.settings);
+                 // Reactions (and residual forces) read right after the load, not
+                 // 0 until a step ran. Degenerate geometry is the first step's to report.
+                 try {
+                   t.solver.compute_forces();
+                 } catch (const std::exception&) {
+                 }
                  return nothing();
                }};
   open.lua = "";  // tendril.load

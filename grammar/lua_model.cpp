@@ -12,6 +12,7 @@
 #include "io/model_xml.hpp"
 #include "io/ccx.hpp"
 #include "io/obj.hpp"
+#include "io/ply.hpp"
 #include "command/registry.hpp"
 #include "lua_args.hpp"
 #include "lua_clamp.hpp"
@@ -610,6 +611,13 @@ int l_save_obj(lua_State* L) {
   return 0;
 }
 
+int l_save_ply(lua_State* L) {
+  Scene& s = check_scene(L, "save_ply");
+  if (lua_type(L, 2) != LUA_TSTRING) arg_error("save_ply", 2, "expected a file name");
+  save_ply(s.model, lua_tostring(L, 2));
+  return 0;
+}
+
 // m:export_ccx(path): a CalculiX input deck of the current state (io/ccx.hpp).
 int l_export_ccx(lua_State* L) {
   Scene& s = check_scene(L, "export_ccx");
@@ -688,6 +696,7 @@ void register_model_meta(lua_State* L) {
   set_fn<l_check>(L, "check");
   set_fn<l_save>(L, "save");
   set_fn<l_save_obj>(L, "save_obj");
+  set_fn<l_save_ply>(L, "save_ply");
   set_fn<l_export_ccx>(L, "export_ccx");
   set_fn<l_formulation>(L, "formulation");
   set_fn<l_orientation>(L, "orientation");

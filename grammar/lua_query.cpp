@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "lua_args.hpp"
+#include "io/vtk.hpp"
 #include "query/element_results.hpp"
 #include "query/member_forces.hpp"
 #include "lua_commands.hpp"
@@ -148,6 +149,22 @@ int l_forces(lua_State* L) {
   return 1;
 }
 
+// The section argument of m:results and m:export_vtk (absent: false).
+bool read_stress_section(lua_State* L, int idx, const char* fn, StressSection& sec) {
+  if (lua_isnoneornil(L, idx)) return false;
+  check_table(L, idx, fn);
+  for (const char* key : {"A", "Wy", "Wz"}) {
+    if (!has_field(L, idx, key)) key_error(fn, key, "is required in the section (tendril.section.rod/tube/rect give it)");
+    if (!(field_number(L, idx, key, fn, 0) > 0)) key_error(fn, key, "must be > 0");
+  }
+  sec.A = field_number(L, idx, "A", fn, 0);
+  sec.Wy = field_number(L, idx, "Wy", fn, 0);
+  sec.Wz = field_number(L, idx, "Wz", fn, 0);
+  sec.strength = field_number(L, idx, "strength", fn, 0);
+  if (sec.strength < 0 || !std::isfinite(sec.strength)) key_error(fn, "strength", "must be >= 0 [Pa]");
+  return true;
+}
+
 // m:results(block [, section]): what every element of the block carries now
 // (query/element_results.hpp), docs/lua-api.md "Results". `section`: a
 // table with A, Wy, Wz (tendril.section.*) and optionally strength, for the
@@ -157,19 +174,7 @@ int l_results(lua_State* L) {
   Scene& s = check_scene(L, fn);
   const BlockId b = check_block(L, 2, s, fn);
   StressSection sec;
-  const bool has_section = !lua_isnoneornil(L, 3);
-  if (has_section) {
-    check_table(L, 3, fn);
-    for (const char* key : {"A", "Wy", "Wz"}) {
-      if (!has_field(L, 3, key)) key_error(fn, key, "is required in the section (tendril.section.rod/tube/rect give it)");
-      if (!(field_number(L, 3, key, fn, 0) > 0)) key_error(fn, key, "must be > 0");
-    }
-    sec.A = field_number(L, 3, "A", fn, 0);
-    sec.Wy = field_number(L, 3, "Wy", fn, 0);
-    sec.Wz = field_number(L, 3, "Wz", fn, 0);
-    sec.strength = field_number(L, 3, "strength", fn, 0);
-    if (sec.strength < 0 || !std::isfinite(sec.strength)) key_error(fn, "strength", "must be >= 0 [Pa]");
-  }
+  const bool has_section = read_stress_section(L, 3, fn, sec);
   const BlockResults r = element_results(s.model, b, has_section ? &sec : nullptr);
   auto number = [&](const char* key, double x) { lua_pushnumber(L, x), lua_setfield(L, -2, key); };
   double max_axial = 0, max_moment = 0, max_stress = 0, max_utilisation = 0;
@@ -264,6 +269,18 @@ int l_reactions(lua_State* L) {
   return 1;
 }
 
+// m:export_vtk(path [, section]): the current state and its results for
+// ParaView (io/vtk.hpp); `section` gives every beam its stress.
+int l_export_vtk(lua_State* L) {
+  const char* fn = "export_vtk";
+  Scene& s = check_scene(L, fn);
+  if (lua_type(L, 2) != LUA_TSTRING) arg_error(fn, 2, "expected a file name");
+  StressSection sec;
+  const bool has_section = read_stress_section(L, 3, fn, sec);
+  save_vtk(s.model, lua_tostring(L, 2), has_section ? &sec : nullptr);
+  return 0;
+}
+
 // m:joint(p, {angle =, stiffness =}): a rotational joint at the crossing p
 // (thesis 6.5.2); returns its index. angle: the target included angle
 // [deg] between the two beams (default: the current one).
@@ -319,6 +336,7 @@ void add_query_methods(lua_State* L) {
   set_fn<l_forces>(L, "forces");
   set_fn<l_results>(L, "results");
   set_fn<l_reactions>(L, "reactions");
+  set_fn<l_export_vtk>(L, "export_vtk");
   set_fn<l_joint>(L, "joint");
   set_fn<l_joint_angle>(L, "joint_angle");
 }

@@ -61,7 +61,10 @@ std::vector<std::vector<ParticleId>> patch_faces(const Model& m, BlockId b) {
 std::string obj_string(const Model& m) {
   const Particles& ps = m.particles;
   std::vector<std::uint32_t> index(ps.capacity(), 0);
-  std::string out;
+  // The units, and one group per block named KIND-ID (the block's id as
+  // b.id reads in Lua): Rhino, Blender and MeshLab list them as layers or
+  // objects.
+  std::string out = "# tendril model; units: m\n";
   std::uint32_t n = 0;
   for (ParticleId p = 0; p < ps.capacity(); ++p) {
     if (!ps.valid(p)) continue;
@@ -88,6 +91,9 @@ std::string obj_string(const Model& m) {
   };
   for (BlockId b : m.live_blocks()) {
     const Block& blk = m.blocks[b];
+    out += "g ";
+    out += block_kind_name(blk.kind);
+    out += '-' + std::to_string(b) + '\n';
     if (blk.kind == BlockKind::Patch) {
       for (const auto& face : patch_faces(m, b)) line('f', face, false);
     } else {

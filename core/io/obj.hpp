@@ -1,8 +1,10 @@
 #pragma once
-// Wavefront OBJ output of the model's geometry: one "v" per live particle
-// (numbered 1..n in the order of live ids), one "l" polyline per cable and
-// beam (a ring repeats its first vertex), one "f" per patch quad, all
-// consistently oriented within a patch. Doubles carry 17 significant digits.
+// Wavefront OBJ output of the model's geometry: a comment with the units
+// (m), one "v" per live particle (numbered 1..n in the order of live ids),
+// then per block a group "g KIND-ID" (g beam-3, g cable-4, g patch-7) with
+// one "l" polyline per cable and beam (a ring repeats its first vertex) or
+// one "f" per patch quad, all consistently oriented within a patch. Doubles
+// carry 17 significant digits.
 #include <string>
 #include <vector>
 

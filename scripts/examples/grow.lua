@@ -2,7 +2,7 @@
 -- each dropping children that become a bent GFRP rod pinned at both ends;
 -- tensile linkers tie neighbouring rods with cables; the network then relaxes
 -- under its own weight. Parameters: tendril.param(name, default); `tendril
--- sweep` varies them. Same seed, same network.
+-- sweep` varies them. Same seed, same network. Prints the most stressed rod.
 local A = tendril.agents
 local spacing = tendril.param("spacing", 0.3)
 local view = tendril.param("view", 50)
@@ -43,7 +43,20 @@ print(string.format("grown: %d particles, %d beams, %d cables; equilibrium %s af
   c.particles, c.beams, c.cables, tostring(r.converged), r.steps, r.residual))
 assert(c.beams == 4 and c.cables >= 4, "too few links")
 m:check()
-tendril.report(m, { converged = r.converged })
+-- The most stressed rod and how much of the GFRP's strength it uses
+-- (docs/lua-api.md, "Results"); grow.vtk shows every element's for ParaView.
+local section = tendril.section.rod{ d = d, material = "gfrp" }
+local worst, worst_rod = 0, nil
+for _, b in ipairs(m:blocks()) do
+  if m:kind(b) == "beam" then
+    local stress = m:results(b, section).max_stress
+    if stress > worst then worst, worst_rod = stress, b end
+  end
+end
+print(string.format("most stressed rod: block %d, %.0f MPa, utilisation %.2f", worst_rod.id, worst / 1e6,
+  worst / section.strength))
+tendril.report(m, { converged = r.converged, max_stress = worst, utilisation = worst / section.strength })
 m:save(tendril.out("grow.xml"))
 m:save_obj(tendril.out("grow.obj"))
+m:export_vtk(tendril.out("grow.vtk"), section)
 m:save_journal(tendril.out("journal.txt"))

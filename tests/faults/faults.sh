@@ -21,7 +21,7 @@ note() { echo "$*"; }
 # The files of one complete round of saves.lua, to compare against.
 reference() {
   local ref=$work/reference
-  if [ ! -f "$ref/model.xml" ]; then
+  if [ ! -f "$ref/model.xml" ] || [ "$tendril" -nt "$ref/model.xml" ]; then  # a rebuilt tendril may write otherwise
     rm -rf "$ref"
     "$tendril" run "$here/saves.lua" --quiet --out "$ref" --param rounds=1 >/dev/null || fail "reference run failed"
   fi

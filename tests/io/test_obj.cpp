@@ -10,7 +10,7 @@
 
 using namespace tendril;
 
-TEST_CASE("obj: vertices renumbered densely, polylines for beams and cables, oriented quads") {
+TEST_CASE("obj: units, vertices renumbered densely, a group per block, polylines for beams and cables, oriented quads") {
   Model m;
   ParticleId hole = m.add_particle(Vec3(9, 9, 9));  // deleted below: numbering closes the gap
   ParticleId a = m.add_particle(Vec3(0, 0, 0)), b = m.add_particle(Vec3(1, 0, 0)), c = m.add_particle(Vec3(2, 0, 0));
@@ -27,6 +27,7 @@ TEST_CASE("obj: vertices renumbered densely, polylines for beams and cables, ori
   REQUIRE(m.check() == "");
 
   const std::string expected =
+      "# tendril model; units: m\n"
       "v 0 0 0\n"
       "v 1 0 0\n"
       "v 2 0 0\n"
@@ -40,9 +41,13 @@ TEST_CASE("obj: vertices renumbered densely, polylines for beams and cables, ori
       "v 0 -0.25 2\n"
       "v 0.5 -0.25 2\n"
       "v 1 -0.25 2\n"
+      "g beam-0\n"
       "l 1 2 3\n"
+      "g cable-1\n"
       "l 1 4\n"
+      "g beam-2\n"
       "l 5 6 7 5\n"
+      "g patch-3\n"
       "f 8 9 12 11\n"
       "f 9 10 13 12\n";
   CHECK(obj_string(m) == expected);

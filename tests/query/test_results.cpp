@@ -5,9 +5,13 @@
 // beam's moment, and the principal stresses of Mohr's circle.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <string>
+#include <vector>
 
 #include "lua_host.hpp"
 #include "query/element_results.hpp"
@@ -171,4 +175,138 @@ assert(#r.vertices == 19 and #r.elements == 20)
 local ok, err = pcall(m.results, m, b, { A = 1 })
 assert(not ok and err:find("Wy"), err)
 )") == "");
+}
+
+namespace {
+
+// A legacy VTK file read back: points, cells and every SCALARS / VECTORS
+// field of CELL_DATA ("cell.NAME") and POINT_DATA ("point.NAME").
+struct VtkFile {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<int>> cells;
+  std::vector<int> types;
+  std::map<std::string, std::vector<double>> fields;
+};
+
+VtkFile read_vtk(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  REQUIRE(in.good());
+  VtkFile f;
+  std::string line, word, section;
+  std::getline(in, line);
+  REQUIRE(line == "# vtk DataFile Version 3.0");
+  std::getline(in, line);  // title
+  std::getline(in, line);
+  REQUIRE(line == "ASCII");
+  std::size_t count = 0;
+  while (in >> word) {
+    if (word == "DATASET") {
+      in >> word;
+      REQUIRE(word == "UNSTRUCTURED_GRID");
+    } else if (word == "POINTS") {
+      in >> count >> word;
+      f.points.resize(count);
+      for (auto& p : f.points) in >> p[0] >> p[1] >> p[2];
+    } else if (word == "CELLS") {
+      std::size_t size;
+      in >> count >> size;
+      f.cells.resize(count);
+      for (auto& c : f.cells) {
+        int n;
+        in >> n;
+        c.resize(std::size_t(n));
+        for (int& v : c) in >> v;
+      }
+    } else if (word == "CELL_TYPES") {
+      in >> count;
+      f.types.resize(count);
+      for (int& t : f.types) in >> t;
+    } else if (word == "CELL_DATA" || word == "POINT_DATA") {
+      section = word == "CELL_DATA" ? "cell." : "point.";
+      in >> count;
+    } else if (word == "SCALARS" || word == "VECTORS") {
+      const int width = word == "SCALARS" ? 1 : 3;
+      std::string name, type;
+      in >> name >> type;
+      if (width == 1) {
+        int components;
+        in >> components >> word >> word;  // LOOKUP_TABLE default
+      }
+      auto& v = f.fields[section + name];
+      v.resize(count * std::size_t(width));
+      for (double& x : v) in >> x;
+    } else {
+      FAIL("unexpected word in the VTK file: " << word);
+    }
+  }
+  REQUIRE(!in.bad());
+  return f;
+}
+
+}  // namespace
+
+TEST_CASE("m:export_vtk: a file ParaView reads, with the results read back equal to the hand calculations") {
+  const auto out = std::filesystem::temp_directory_path() / "tendril-test-results" / "out";
+  std::filesystem::remove(out / "r.vtk");
+  REQUIRE(run("vtk.lua", R"(
+local rod = tendril.section.rod{ d = 0.012, material = "gfrp" }
+local m = tendril.model()
+local pts = {}
+for i = 0, 10 do pts[#pts + 1] = { i / 10, 0, 0 } end
+local beam = m:beam{ points = pts, EA = rod.EA, EI = rod.EI, GJ = rod.GJ, dofs = 6 }
+local ps = m:particles(beam)
+m:lock(ps[1], "full")
+m:torque(ps[#ps], { 0, 0, 10 })
+local a, b, c = m:particle{ -1, 0, -5 }, m:particle{ 1, 0, -5 }, m:particle{ 0, 0, -5.5 }
+m:cable(a, c, { EA = 1e7 })
+m:cable(c, b, { EA = 1e7 })
+m:lock(a, "xyz"); m:lock(b, "xyz")
+m:load(c, { 0, 0, -1000 })
+local function row(y) local r = {} for i = 0, 2 do r[#r + 1] = m:particle{ i / 2, y, 3 } end return r end
+local patch = m:project{ from = row(0), to = row(1), rows = 1, EA = 10 }
+m:formulation(patch, "cst", { stress = { 0, 0 }, warp = { 1, 0, 0 }, analysis = { dxx = 800, dyy = 600, dxy = 240, dyx = 240, G = 30 } })
+for _, p in ipairs(m:particles(patch)) do local x = m:position(p) m:set_position(p, { 1.01 * x[1], x[2], x[3] }) m:lock(p, "xyz") end
+assert(m:run{ tolerance = 1e-6, max_steps = 200000 }.converged)
+m:export_vtk(tendril.out("r.vtk"), rod)
+local ok, err = pcall(m.export_vtk, m, "/nonexistent-dir/r.vtk")
+assert(not ok and err:find("nonexistent", 1, true), err)
+)") == "");
+  const VtkFile f = read_vtk(out / "r.vtk");
+  // 11 beam, 3 cable, 3 x 3 patch particles (rows = 1: one row between
+  // the two given); 10 beam elements, 2 cable segments, the patch's 8
+  // boundary bars (a CST patch keeps them) and 2 x 2 x 2 triangles.
+  REQUIRE(f.points.size() == 11 + 3 + 9);
+  REQUIRE(f.cells.size() == 10 + 2 + 8 + 8);
+  const auto& axial = f.fields.at("cell.axial");
+  const auto& stress = f.fields.at("cell.stress");
+  const auto& utilisation = f.fields.at("cell.utilisation");
+  const auto& s1 = f.fields.at("cell.s1");
+  const auto& s2 = f.fields.at("cell.s2");
+  for (std::size_t k = 0; k < 10; ++k) {  // sigma = M / W = 10 / (pi 0.012^3 / 32)
+    CHECK(f.types[k] == 3);
+    CHECK(stress[k] == doctest::Approx(10 / (M_PI * std::pow(0.012, 3) / 32)).epsilon(0.01));
+    CHECK(utilisation[k] == doctest::Approx(stress[k] / 400e6));
+    CHECK(f.fields.at("cell.moment")[k] == doctest::Approx(10).epsilon(0.01));
+  }
+  for (std::size_t k = 10; k < 12; ++k) {  // N = P / (2 sin theta) from the cable's own geometry
+    const auto& p = f.points[std::size_t(f.cells[k][0])];
+    const auto& q = f.points[std::size_t(f.cells[k][1])];
+    const double dx = q[0] - p[0], dz = q[2] - p[2];
+    CHECK(axial[k] == doctest::Approx(1000 / (2 * std::abs(dz) / std::hypot(dx, dz))).epsilon(1e-4));
+    CHECK(stress[k] == 0);
+  }
+  for (std::size_t k = 20; k < 28; ++k) {  // plane stress, eps_x = 1 %
+    CHECK(f.types[k] == 5);
+    CHECK(s1[k] == doctest::Approx(8));
+    CHECK(s2[k] == doctest::Approx(2.4));
+    CHECK(std::abs(f.fields.at("cell.d1")[3 * k]) == doctest::Approx(1));
+  }
+  // Reactions: the cable supports (points 11 and 12) take P / 2 upwards each,
+  // the clamp (point 0) the moment.
+  const auto& reaction = f.fields.at("point.reaction");
+  CHECK(reaction[3 * 11 + 2] == doctest::Approx(500).epsilon(1e-4));
+  CHECK(reaction[3 * 12 + 2] == doctest::Approx(500).epsilon(1e-4));
+  CHECK(f.fields.at("point.reaction_moment")[2] == doctest::Approx(-10).epsilon(0.01));
+  CHECK(f.fields.at("point.locked")[0] == 1);
+  CHECK(f.fields.at("point.locked")[1] == 0);
 }
