@@ -1,7 +1,8 @@
-// `tendril export MODEL --ccx FILE --vtk FILE --obj FILE --ply FILE`: a
-// model database (m:save) as a CalculiX input deck (io/ccx.hpp,
+// `tendril export MODEL --ccx FILE --vtk FILE --obj FILE --ply FILE --glb
+// FILE`: a model database (m:save) as a CalculiX input deck (io/ccx.hpp,
 // docs/calculix.md), a VTK file of the state and its results for ParaView
-// (io/vtk.hpp), an OBJ (io/obj.hpp) or a PLY (io/ply.hpp); at least one.
+// (io/vtk.hpp), an OBJ (io/obj.hpp), a PLY (io/ply.hpp) or glTF
+// (io/gltf.hpp); at least one.
 // The results come from the saved state: forces, moments and reactions
 // after one force evaluation, no step (stresses need a section: m:export_vtk).
 #include <cstdio>
@@ -9,6 +10,7 @@
 
 #include "command.hpp"
 #include "io/ccx.hpp"
+#include "io/gltf.hpp"
 #include "io/model_xml.hpp"
 #include "io/obj.hpp"
 #include "io/ply.hpp"
@@ -20,12 +22,12 @@ namespace tendril::app {
 namespace {
 
 struct Outputs {
-  std::string model, ccx, vtk, obj, ply;
+  std::string model, ccx, vtk, obj, ply, glb, colour = "kind";
 };
 
 int export_model(const Outputs& o) {
-  if (o.ccx.empty() && o.vtk.empty() && o.obj.empty() && o.ply.empty())
-    throw UsageError("nothing to write: give --ccx, --vtk, --obj or --ply FILE");
+  if (o.ccx.empty() && o.vtk.empty() && o.obj.empty() && o.ply.empty() && o.glb.empty())
+    throw UsageError("nothing to write: give --ccx, --vtk, --obj, --ply or --glb FILE");
   Model model;
   SolverSettings settings;
   load_model_xml(o.model, model, settings);
@@ -40,6 +42,7 @@ int export_model(const Outputs& o) {
   if (!o.vtk.empty()) save_vtk(model, o.vtk), done(o.vtk);
   if (!o.obj.empty()) save_obj(model, o.obj), done(o.obj);
   if (!o.ply.empty()) save_ply(model, o.ply), done(o.ply);
+  if (!o.glb.empty()) save_gltf(model, o.glb, GltfOptions{o.colour}), done(o.glb);
   return kOk;
 }
 
@@ -48,7 +51,7 @@ int export_model(const Outputs& o) {
 Command export_command() {
   return {"export",
           "writes a model database (m:save) as a CalculiX deck (docs/calculix.md), VTK with results for ParaView, "
-          "OBJ or PLY",
+          "OBJ, PLY or glTF",
           [](CLI::App& cli) {
             auto o = std::make_shared<Outputs>();
             cli.add_option("--ccx", o->ccx, "the CalculiX deck to write (ccx -i NAME reads NAME.inp)")->type_name("FILE");
@@ -56,6 +59,10 @@ Command export_command() {
                 ->type_name("FILE");
             cli.add_option("--obj", o->obj, "a Wavefront OBJ, one group per block")->type_name("FILE");
             cli.add_option("--ply", o->ply, "a PLY of the particles, line elements and patch faces")->type_name("FILE");
+            cli.add_option("--glb", o->glb, "a glTF 2.0 binary for three.js, Blender, Rhino 8 (y up)")->type_name("FILE");
+            cli.add_option("--colour", o->colour, "what colours the --glb: kind, axial, moment or s1")
+                ->check(CLI::IsMember({"kind", "axial", "moment", "s1"}))
+                ->type_name("FIELD");
             cli.add_option("model", o->model, "a model database written by m:save")
                 ->required()
                 ->check(CLI::ExistingPath)

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "lua_args.hpp"
+#include "io/gltf.hpp"
 #include "io/vtk.hpp"
 #include "query/element_results.hpp"
 #include "query/member_forces.hpp"
@@ -281,6 +282,33 @@ int l_export_vtk(lua_State* L) {
   return 0;
 }
 
+// m:export_gltf(path [, {colour =, section =}]): the current state as glTF
+// 2.0 binary (io/gltf.hpp), coloured by kind or by a result.
+int l_export_gltf(lua_State* L) {
+  const char* fn = "export_gltf";
+  Scene& s = check_scene(L, fn);
+  if (lua_type(L, 2) != LUA_TSTRING) arg_error(fn, 2, "expected a file name");
+  GltfOptions o;
+  StressSection sec;
+  if (!lua_isnoneornil(L, 3)) {
+    check_table(L, 3, fn);
+    check_keys(L, 3, fn, {"colour", "section"});
+    lua_getfield(L, 3, "colour");
+    if (!lua_isnil(L, -1)) {
+      if (lua_type(L, -1) != LUA_TSTRING) key_error(fn, "colour", "must be a string");
+      o.colour = lua_tostring(L, -1);
+      if (!gltf_colour_known(o.colour))
+        key_error(fn, "colour", "'" + o.colour + "' is none of kind, axial, moment, stress, utilisation, s1");
+    }
+    lua_pop(L, 1);
+    lua_getfield(L, 3, "section");
+    if (!lua_isnil(L, -1) && read_stress_section(L, lua_gettop(L), fn, sec)) o.section = &sec;
+    lua_pop(L, 1);
+  }
+  save_gltf(s.model, lua_tostring(L, 2), o);
+  return 0;
+}
+
 // m:joint(p, {angle =, stiffness =}): a rotational joint at the crossing p
 // (thesis 6.5.2); returns its index. angle: the target included angle
 // [deg] between the two beams (default: the current one).
@@ -337,6 +365,7 @@ void add_query_methods(lua_State* L) {
   set_fn<l_results>(L, "results");
   set_fn<l_reactions>(L, "reactions");
   set_fn<l_export_vtk>(L, "export_vtk");
+  set_fn<l_export_gltf>(L, "export_gltf");
   set_fn<l_joint>(L, "joint");
   set_fn<l_joint_angle>(L, "joint_angle");
 }

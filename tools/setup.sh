@@ -8,7 +8,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 # calculix-ccx: the independent FE solver of bench/fe and the test fe-ccx.
 packages=(cmake g++ ninja-build pkg-config libeigen3-dev liblua5.4-dev lua5.4
           libcgal-dev libtinyxml2-dev libopenmesh-dev doctest-dev gnuplot-nox
-          libcivetweb-dev nlohmann-json3-dev chromium libcli11-dev
+          libcivetweb-dev nlohmann-json3-dev chromium libcli11-dev libtinygltf-dev
           slurm-wlm munge clang libclang-rt-14-dev calculix-ccx)
 missing=()
 for p in "${packages[@]}"; do

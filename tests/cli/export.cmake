@@ -1,8 +1,8 @@
 cmake_minimum_required(VERSION 3.20)
-# `tendril export` of a saved model (the CLI scene, a 1 kg mass hung from two
-# pins, saved converged by --save): VTK, OBJ and PLY written, the VTK's
+# `tendril export` of a saved model (a 1 kg mass hung from two pins, saved
+# converged by saved_hanging_mass.lua): VTK, OBJ, PLY and glTF written, the VTK's
 # reactions those of the saved state (each pin holds 9.81 / 2 N up) without
-# a step, the OBJ grouped per block.
+# a step, the OBJ grouped per block, a glTF binary.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 execute_process(COMMAND ${TENDRIL} run ${SAVER} --quiet --out ${WORK} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -10,9 +10,9 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "tendril run ${SAVER}: exit status ${rc}\n${out}${err}")
 endif()
 execute_process(COMMAND ${TENDRIL} export ${WORK}/model.xml --vtk ${WORK}/model.vtk --obj ${WORK}/model.obj
-                        --ply ${WORK}/model.ply
+                        --ply ${WORK}/model.ply --glb ${WORK}/model.glb --colour axial
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0 OR NOT out MATCHES "3 particles, 2 blocks -> .*model.ply")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "3 particles, 2 blocks -> .*model.glb")
   message(FATAL_ERROR "tendril export: exit status ${rc}\n${out}${err}")
 endif()
 file(READ ${WORK}/model.vtk vtk)
@@ -28,4 +28,8 @@ file(READ ${WORK}/model.ply ply)
 if(NOT ply MATCHES "^ply\nformat ascii 1.0\n.*element edge 2\n")
   message(FATAL_ERROR "model.ply:\n${ply}")
 endif()
-message(STATUS "export: VTK reactions, OBJ groups, PLY edges")
+file(READ ${WORK}/model.glb magic LIMIT 4)
+if(NOT magic STREQUAL "glTF")
+  message(FATAL_ERROR "model.glb does not start with glTF: ${magic}")
+endif()
+message(STATUS "export: VTK reactions, OBJ groups, PLY edges, glTF")

@@ -13,6 +13,9 @@
 #include <string>
 #include <vector>
 
+#include <tiny_gltf.h>
+
+#include "io/gltf.hpp"
 #include "lua_host.hpp"
 #include "query/element_results.hpp"
 
@@ -268,6 +271,11 @@ m:formulation(patch, "cst", { stress = { 0, 0 }, warp = { 1, 0, 0 }, analysis = 
 for _, p in ipairs(m:particles(patch)) do local x = m:position(p) m:set_position(p, { 1.01 * x[1], x[2], x[3] }) m:lock(p, "xyz") end
 assert(m:run{ tolerance = 1e-6, max_steps = 200000 }.converged)
 m:export_vtk(tendril.out("r.vtk"), rod)
+m:export_gltf(tendril.out("r.glb"), { colour = "utilisation", section = rod })
+for _, bad in ipairs{ { colour = "heat" }, { colour = "stress" } } do
+  local ok, err = pcall(m.export_gltf, m, tendril.out("bad.glb"), bad)
+  assert(not ok and err:find(bad.colour == "heat" and "'heat' is none of" or "needs a section", 1, true), err)
+end
 local ok, err = pcall(m.export_vtk, m, "/nonexistent-dir/r.vtk")
 assert(not ok and err:find("nonexistent", 1, true), err)
 )") == "");
@@ -309,4 +317,38 @@ assert(not ok and err:find("nonexistent", 1, true), err)
   CHECK(f.fields.at("point.reaction_moment")[2] == doctest::Approx(-10).epsilon(0.01));
   CHECK(f.fields.at("point.locked")[0] == 1);
   CHECK(f.fields.at("point.locked")[1] == 0);
+
+  // The same state as glTF, read back with tinygltf: the line elements'
+  // vertices coloured by utilisation (the beam's 0.147 on the ramp, the
+  // cables' none grey), y up.
+  std::ifstream glb_in(out / "r.glb", std::ios::binary);
+  const std::string glb((std::istreambuf_iterator<char>(glb_in)), std::istreambuf_iterator<char>());
+  tinygltf::Model g;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  REQUIRE(loader.LoadBinaryFromMemory(&g, &err, &warn, reinterpret_cast<const unsigned char*>(glb.data()),
+                                      unsigned(glb.size())));
+  CHECK(err == "");
+  REQUIRE(g.meshes.size() == 1);
+  REQUIRE(g.meshes[0].primitives.size() == 2);
+  auto floats = [&](int accessor) {
+    const tinygltf::Accessor& a = g.accessors[std::size_t(accessor)];
+    const tinygltf::BufferView& v = g.bufferViews[std::size_t(a.bufferView)];
+    const float* p = reinterpret_cast<const float*>(g.buffers[std::size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset);
+    return std::vector<float>(p, p + a.count * 3);
+  };
+  const tinygltf::Primitive& lines = g.meshes[0].primitives[0];
+  CHECK(lines.mode == TINYGLTF_MODE_LINE);
+  const std::vector<float> colour = floats(lines.attributes.at("COLOR_0"));
+  const std::vector<float> position = floats(lines.attributes.at("POSITION"));
+  REQUIRE(colour.size() == 3u * 2 * (10 + 2 + 8));
+  const auto expected = gltf_ramp(utilisation[0]);
+  for (std::size_t v = 0; v < 20; ++v)
+    for (int c = 0; c < 3; ++c) CHECK(colour[3 * v + std::size_t(c)] == doctest::Approx(expected[std::size_t(c)]));
+  CHECK(colour[3 * 20] == doctest::Approx(0.6));  // a cable: no utilisation
+  CHECK(position[3 * 21 + 1] == doctest::Approx(f.points[std::size_t(f.cells[10][1])][2]));  // y up: tendril's z
+  const tinygltf::Primitive& faces = g.meshes[0].primitives[1];
+  CHECK(faces.mode == TINYGLTF_MODE_TRIANGLES);
+  CHECK(g.accessors[std::size_t(faces.attributes.at("POSITION"))].count == 3u * 8);
+  CHECK(g.accessors[std::size_t(faces.attributes.at("POSITION"))].maxValues[1] == doctest::Approx(3));
 }
