@@ -78,6 +78,50 @@ function case.bending(m, beam, section, skip)
   return r_min, section.E * section.c / r_min, at
 end
 
+-- The largest bending stress in a 3-DOF beam from what it carries: the
+-- largest |moment| of m:forces over its vertices divided by W [m3] (the
+-- section's elastic modulus; for a bundle of n members bending together, n
+-- times one member's), and the particle where it is. skip(p) as above.
+function case.moment_stress(m, beam, W, skip)
+  local moment, at = 0, nil
+  for _, v in ipairs(m:forces(beam).vertices) do
+    if not (skip and skip(v.particle)) and math.abs(v.moment) > moment then moment, at = math.abs(v.moment), v.particle end
+  end
+  return moment / W, moment, at
+end
+
+-- The elastic energy [J] a block stores now, from what it carries
+-- (m:forces): bending at a beam's vertices, 1/2 M kappa over half of the
+-- two segments beside each; axial in bars, cables and patch edges,
+-- prestress times length (the work of a geometric tension, thesis eq. 3.32)
+-- plus 1/2 EA strain^2 L0 as 1/2 (N - prestress) strain L0. The section
+-- {EA =, prestress =} is what the block was made with.
+function case.energy(m, block, section)
+  local f, energy = m:forces(block), 0
+  local ps = m:particles(block)
+  if f.vertices then
+    local where, n, closed = {}, #ps, m:closed(block)
+    for i, p in ipairs(ps) do where[p.id] = i end
+    for _, v in ipairs(f.vertices) do
+      local i = where[v.particle.id]
+      local a, c = ps[(i - 2) % n + 1], ps[i % n + 1]
+      if closed or (i > 1 and i < n) then
+        local l = 0.5 * (case.distance(m:position(a), m:position(v.particle)) + case.distance(m:position(v.particle), m:position(c)))
+        energy = energy + 0.5 * v.moment * v.curvature * l
+      end
+    end
+  end
+  local prestress = section and section.prestress or 0
+  for _, s in ipairs(f.segments or {}) do
+    if not s.slack then
+      local L = case.distance(m:position(s.a), m:position(s.b))
+      local L0 = L / (1 + s.strain)
+      energy = energy + prestress * L + 0.5 * (s.axial - prestress) * s.strain * L0
+    end
+  end
+  return energy
+end
+
 -- The bounding box of some particles (all by default): its extent in x and
 -- y, its height above the lowest point, and its lowest and highest z.
 function case.envelope(m, ps)
