@@ -62,9 +62,13 @@ int l_references(lua_State* L) {
   return 1;
 }
 
-// m:summary(): figures of a grown structure for reports and sweeps.
+bool read_stress_section(lua_State* L, int idx, const char* fn, StressSection& sec);
+
+// m:summary([section]): figures of a grown structure for reports and sweeps.
 int l_summary(lua_State* L) {
   Scene& s = check_scene(L, "summary");
+  StressSection sec;
+  const bool has_section = read_stress_section(L, 2, "summary", sec);  // before the answer takes index 2
   const Model& m = s.model;
   const Vec3* x = m.particles.position.data();
   double beam_length = 0, max_strain = 0, min_radius = std::numeric_limits<double>::infinity();
@@ -106,6 +110,23 @@ int l_summary(lua_State* L) {
   set("min_bending_radius", min_radius);
   set("max_strain", max_strain);
   set("steps", double(s.solver.steps()));
+  // With a section: the most stressed beam, where, and its utilisation.
+  if (has_section) {
+    double worst = 0;
+    BlockId worst_block = kNone;
+    ParticleId worst_particle = kNone;
+    for (const BlockId b : m.live_blocks()) {
+      if (m.blocks[b].kind != BlockKind::Beam) continue;
+      for (const LineResult& e : element_results(m, b, &sec).lines)
+        if (e.stress > worst) worst = e.stress, worst_block = b, worst_particle = e.at;
+    }
+    set("max_stress", worst);
+    if (sec.strength > 0) set("max_utilisation", worst / sec.strength);
+    if (worst_block != kNone) {
+      set("max_stress_block", double(worst_block));
+      set("max_stress_particle", double(worst_particle));
+    }
+  }
   return 1;
 }
 
@@ -198,6 +219,8 @@ int l_results(lua_State* L) {
     number("moment", e.moment);
     number("curvature", e.curvature);
     number("radius", e.radius);
+    push_particle(L, s, e.at);
+    lua_setfield(L, -2, "at");
     if (!std::isnan(e.stress)) number("stress", e.stress);
     if (!std::isnan(e.utilisation)) number("utilisation", e.utilisation);
     lua_rawseti(L, -2, lua_Integer(k + 1));

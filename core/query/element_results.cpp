@@ -53,7 +53,7 @@ void beam6_result(const Beam6& b, const Vec3* x, const Quat* q, const StressSect
     const double s = sec ? std::abs(r.axial) / sec->A + std::abs(My) / sec->Wy + std::abs(Mz) / sec->Wz : M;
     if (s <= worst) continue;
     worst = s;
-    r.My = My, r.Mz = Mz, r.moment = M;
+    r.My = My, r.Mz = Mz, r.moment = M, r.at = k == 0 ? b.i : b.j;
     r.curvature = std::hypot(b.EIy > 0 ? My / b.EIy : 0.0, b.EIz > 0 ? Mz / b.EIz : 0.0);
     if (sec) r.stress = s;
   }
@@ -98,6 +98,7 @@ BlockResults element_results(const Model& m, BlockId block, const StressSection*
   for (const Bar& bar : m.bars.items) {
     if (m.dart_block[bar.dart] != block) continue;
     LineResult r{bar.i, bar.j};
+    r.at = bar.i;  // no moment: the stress is N / A all along
     bar_axial(bar, x, r);
     out.lines.push_back(r);
   }
@@ -120,6 +121,7 @@ BlockResults element_results(const Model& m, BlockId block, const StressSection*
         auto it = vertex.find(p);
         if (it == vertex.end() || std::abs(it->second->moment) < r.moment) continue;
         r.moment = std::abs(it->second->moment);
+        r.at = p;
         r.My = it->second->moment;
         r.curvature = it->second->curvature;
         r.radius = it->second->radius;

@@ -34,6 +34,7 @@ struct LineResult {
   // (6 DOF: the element's end moments, eq. 3.46, signed alike along the
   // beam; 3 DOF: the hinge moment of the end vertex, in My, Mz = 0).
   double My = 0, Mz = 0, torsion = 0;
+  ParticleId at = kNone;  // that end (a or b), where the moment, curvature and stress are read
   double moment = 0;     // the resultant |M| there
   double curvature = 0;  // 1/m, M / EI (6 DOF) or 2 sin(alpha) / Lc (3 DOF) there
   double radius = std::numeric_limits<double>::infinity();  // 1 / curvature

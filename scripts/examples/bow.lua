@@ -33,11 +33,11 @@ for _, p in ipairs(ps) do m:lock(p, "y") end
 
 local r = m:run{ tolerance = 1e-4, max_steps = 200000 }
 local rise = m:position(ps[n // 2 + 1])[3]
-local tension = m:forces(string_).segments[1].axial
+local tension = m:results(string_).elements[1].axial
 local stretch = m:position(right)[1] - m:position(left)[1] - span
 print(string.format("coarse: %d steps, residual %.2e N, rise %.4f m, cable tension %.1f N",
   r.steps, r.residual, rise, tension))
-assert(math.abs(tension - 1e5 * stretch / span) < 1e-9 * tension, "m:forces: the string's tension is EA * strain")
+assert(math.abs(tension - 1e5 * stretch / span) < 1e-9 * tension, "m:results: the string's tension is EA * strain")
 assert(r.converged and rise > 1.5, "the bow did not reach equilibrium")
 
 -- Refine: one particle between every consecutive pair (rule 13), keep running.
@@ -48,6 +48,16 @@ local top = m:particles(beam)[n + 1]
 print(string.format("fine:   %d steps, residual %.2e N, rise %.4f m, %d particles",
   r.steps, r.residual, m:position(top)[3], m:count().particles))
 assert(r.converged, "the refined bow did not reach equilibrium")
+
+-- The rod's results (docs/lua-api.md, "Results"): cut at the crown, the
+-- string's tension T acts at the lever arm of the rise, so M = T rise there.
+local section = tendril.section.rod{ d = d, material = "gfrp" }
+local res = m:results(beam, section)
+tension = m:results(string_).elements[1].axial
+local crown = tension * m:position(top)[3]
+print(string.format("largest moment %.1f N m (T rise %.1f N m), stress %.0f MPa, utilisation %.2f",
+  res.max_moment, crown, res.max_stress / 1e6, res.max_utilisation))
+assert(math.abs(res.max_moment - crown) < 0.02 * crown, "the crown's moment is not T * rise")
 
 m:save(tendril.out("bow.xml"))
 m:save_obj(tendril.out("bow.obj"))

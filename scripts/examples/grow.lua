@@ -46,16 +46,10 @@ m:check()
 -- The most stressed rod and how much of the GFRP's strength it uses
 -- (docs/lua-api.md, "Results"); grow.vtk shows every element's for ParaView.
 local section = tendril.section.rod{ d = d, material = "gfrp" }
-local worst, worst_rod = 0, nil
-for _, b in ipairs(m:blocks()) do
-  if m:kind(b) == "beam" then
-    local stress = m:results(b, section).max_stress
-    if stress > worst then worst, worst_rod = stress, b end
-  end
-end
-print(string.format("most stressed rod: block %d, %.0f MPa, utilisation %.2f", worst_rod.id, worst / 1e6,
-  worst / section.strength))
-tendril.report(m, { converged = r.converged, max_stress = worst, utilisation = worst / section.strength })
+local worst = m:summary(section)
+print(string.format("most stressed rod: block %d at particle %d, %.0f MPa, utilisation %.2f", worst.max_stress_block,
+  worst.max_stress_particle, worst.max_stress / 1e6, worst.max_utilisation))
+tendril.report(m, { converged = r.converged, max_stress = worst.max_stress, utilisation = worst.max_utilisation })
 m:save(tendril.out("grow.xml"))
 m:save_obj(tendril.out("grow.obj"))
 m:export_vtk(tendril.out("grow.vtk"), section)

@@ -175,6 +175,9 @@ local M = P * 2 / 4
 assert(math.abs(r.max_moment - M) < 0.01 * M, "moment " .. r.max_moment)
 assert(math.abs(r.max_stress - M / rod.Wy) < 0.01 * M / rod.Wy, "stress " .. r.max_stress)
 assert(#r.vertices == 19 and #r.elements == 20)
+local summary = m:summary(rod)   -- the most stressed beam: at mid-span
+assert(summary.max_stress == r.max_stress and summary.max_stress_block == b.id and summary.max_stress_particle == ps[11].id)
+assert(r.elements[10].at == ps[11] and r.elements[11].at == ps[11])
 local ok, err = pcall(m.results, m, b, { A = 1 })
 assert(not ok and err:find("Wy"), err)
 )") == "");
