@@ -355,3 +355,62 @@ assert(not ok and err:find("nonexistent", 1, true), err)
   CHECK(g.accessors[std::size_t(faces.attributes.at("POSITION"))].count == 3u * 8);
   CHECK(g.accessors[std::size_t(faces.attributes.at("POSITION"))].maxValues[1] == doctest::Approx(3));
 }
+
+TEST_CASE("m:results: a ring under radial loads is in uniform compression; a catenary's horizontal tension is constant") {
+  CHECK(run("ring.lua", R"(
+-- A regular 24-gon ring (stress free as built), P inward at every node: the
+-- node's equilibrium gives N = -P / (2 sin(pi / n)) in every segment.
+local m = tendril.model()
+local n, R, P = 24, 2, 50
+local pts = {}
+for k = 0, n - 1 do pts[#pts + 1] = { R * math.cos(2 * math.pi * k / n), R * math.sin(2 * math.pi * k / n), 0 } end
+local ring = m:beam{ points = pts, EA = 1e7, EI = 1e3, closed = true, rest = "current" }
+local ps = m:particles(ring)
+for k, p in ipairs(ps) do
+  local x = m:position(p)
+  m:load(p, { -P * x[1] / R, -P * x[2] / R, 0 })
+  m:lock(p, "z")
+end
+m:lock(ps[1], "y"); m:lock(ps[n // 2 + 1], "y"); m:lock(ps[n // 4 + 1], "x")   -- rigid motions only
+assert(m:run{ tolerance = 1e-7, max_steps = 200000 }.converged, "the ring did not converge")
+local N = -P / (2 * math.sin(math.pi / n))
+local r = m:results(ring)
+assert(#r.elements == n)
+for k, e in ipairs(r.elements) do
+  assert(math.abs(e.axial - N) < 1e-4 * math.abs(N), k .. ": N " .. e.axial .. " vs " .. N)
+  -- The shortening N / EA = -2e-5 tightens the curvature alike: M = EI 2e-5 / R = 0.01 N m, no more.
+  assert(math.abs(e.moment) < 1e-4 * math.abs(N) * R, k .. ": moment " .. e.moment)
+end
+
+-- A chain of 20 cable segments of 1 kg/m hanging between two pins 10 m
+-- apart: the horizontal component of N is the same in every segment, and
+-- each pin carries half the weight upwards.
+local c = tendril.model()
+c:gravity{ 0, 0, -9.81 }
+local chain, prev = {}, c:particle{ 0, 0, 0 }
+local first = prev
+for k = 1, 20 do
+  local p = c:particle{ 10 * k / 20, 0, -2 * math.sin(math.pi * k / 20) }
+  chain[#chain + 1] = c:cable(prev, p, { EA = 1e7, line_mass = 1, rest_length = 0.6 })
+  prev = p
+end
+c:lock(first, "xyz"); c:lock(prev, "xyz")
+for _, p in ipairs(c:particles()) do c:lock(p, "y") end
+local run = c:run{ tolerance = 1e-6, max_steps = 400000 }
+assert(run.converged, "the chain did not converge: residual " .. run.residual)
+local H
+for k, cable in ipairs(chain) do
+  local e = c:results(cable).elements[1]
+  local a, b = c:position(e.a), c:position(e.b)
+  local h = e.axial * math.abs(b[1] - a[1]) / math.sqrt((b[1] - a[1])^2 + (b[3] - a[3])^2)
+  H = H or h
+  assert(math.abs(h - H) < 1e-5 * H, k .. ": H " .. h .. " vs " .. H)
+end
+local weight = 9.81 * 20 * 0.6
+for _, s in ipairs(c:reactions()) do
+  if s.particle == first or s.particle == prev then
+    assert(math.abs(s.force[3] - weight / 2) < 1e-4 * weight, "pin " .. s.force[3] .. " vs " .. weight / 2)
+  end
+end
+)") == "");
+}
