@@ -63,12 +63,13 @@ int l_references(lua_State* L) {
 }
 
 bool read_stress_section(lua_State* L, int idx, const char* fn, StressSection& sec);
+bool read_beam_sections(lua_State* L, int idx, const char* fn, Scene& s, BeamSections& out);
 
-// m:summary([section]): figures of a grown structure for reports and sweeps.
+// m:summary([sections]): figures of a grown structure for reports and sweeps.
 int l_summary(lua_State* L) {
   Scene& s = check_scene(L, "summary");
-  StressSection sec;
-  const bool has_section = read_stress_section(L, 2, "summary", sec);  // before the answer takes index 2
+  BeamSections sections;
+  const bool has_section = read_beam_sections(L, 2, "summary", s, sections);  // before the answer takes index 2
   const Model& m = s.model;
   const Vec3* x = m.particles.position.data();
   double beam_length = 0, max_strain = 0, min_radius = std::numeric_limits<double>::infinity();
@@ -112,16 +113,18 @@ int l_summary(lua_State* L) {
   set("steps", double(s.solver.steps()));
   // With a section: the most stressed beam, where, and its utilisation.
   if (has_section) {
-    double worst = 0;
+    double worst = 0, utilisation = 0;
     BlockId worst_block = kNone;
     ParticleId worst_particle = kNone;
     for (const BlockId b : m.live_blocks()) {
-      if (m.blocks[b].kind != BlockKind::Beam) continue;
-      for (const LineResult& e : element_results(m, b, &sec).lines)
+      if (m.blocks[b].kind != BlockKind::Beam || !sections.of(b)) continue;
+      for (const LineResult& e : element_results(m, b, sections.of(b)).lines) {
         if (e.stress > worst) worst = e.stress, worst_block = b, worst_particle = e.at;
+        if (e.utilisation > utilisation) utilisation = e.utilisation;
+      }
     }
     set("max_stress", worst);
-    if (sec.strength > 0) set("max_utilisation", worst / sec.strength);
+    if (sections.any_strength()) set("max_utilisation", utilisation);
     if (worst_block != kNone) {
       set("max_stress_block", double(worst_block));
       set("max_stress_particle", double(worst_particle));
@@ -185,6 +188,34 @@ bool read_stress_section(lua_State* L, int idx, const char* fn, StressSection& s
   sec.strength = field_number(L, idx, "strength", fn, 0);
   if (sec.strength < 0 || !std::isfinite(sec.strength)) key_error(fn, "strength", "must be >= 0 [Pa]");
   return true;
+}
+
+// The sections of m:summary, m:export_vtk and m:export_gltf: one for every
+// beam (a table with A) or one per beam, {[beam] = section} or {[id] =
+// section} (absent: false).
+bool read_beam_sections(lua_State* L, int idx, const char* fn, Scene& s, BeamSections& out) {
+  if (lua_isnoneornil(L, idx)) return false;
+  check_table(L, idx, fn);
+  idx = lua_absindex(L, idx);
+  if (has_field(L, idx, "A")) return read_stress_section(L, idx, fn, out.all);
+  lua_pushnil(L);
+  while (lua_next(L, idx)) {
+    BlockId b;
+    if (lua_isinteger(L, -2)) {
+      const lua_Integer id = lua_tointeger(L, -2);
+      if (id < 0 || id >= lua_Integer(kNone)) arg_error(fn, idx, "no block " + std::to_string(id));
+      b = BlockId(id);
+      s.model.require_block(b, fn);
+    } else {
+      b = check_block(L, lua_gettop(L) - 1, s, fn);
+    }
+    if (s.model.blocks[b].kind != BlockKind::Beam)
+      arg_error(fn, idx, "block " + std::to_string(b) + " is a " + block_kind_name(s.model.blocks[b].kind) +
+                             "; sections give beams their stress");
+    read_stress_section(L, lua_gettop(L), fn, out.by_block[b]);
+    lua_pop(L, 1);
+  }
+  return out.any();
 }
 
 // m:results(block [, section]): what every element of the block carries now
@@ -293,15 +324,15 @@ int l_reactions(lua_State* L) {
   return 1;
 }
 
-// m:export_vtk(path [, section]): the current state and its results for
-// ParaView (io/vtk.hpp); `section` gives every beam its stress.
+// m:export_vtk(path [, sections]): the current state and its results for
+// ParaView (io/vtk.hpp); `sections` give beams their stress.
 int l_export_vtk(lua_State* L) {
   const char* fn = "export_vtk";
   Scene& s = check_scene(L, fn);
   if (lua_type(L, 2) != LUA_TSTRING) arg_error(fn, 2, "expected a file name");
-  StressSection sec;
-  const bool has_section = read_stress_section(L, 3, fn, sec);
-  save_vtk(s.model, lua_tostring(L, 2), has_section ? &sec : nullptr);
+  BeamSections sections;
+  const bool has_section = read_beam_sections(L, 3, fn, s, sections);
+  save_vtk(s.model, lua_tostring(L, 2), has_section ? &sections : nullptr);
   return 0;
 }
 
@@ -312,7 +343,7 @@ int l_export_gltf(lua_State* L) {
   Scene& s = check_scene(L, fn);
   if (lua_type(L, 2) != LUA_TSTRING) arg_error(fn, 2, "expected a file name");
   GltfOptions o;
-  StressSection sec;
+  BeamSections sections;
   if (!lua_isnoneornil(L, 3)) {
     check_table(L, 3, fn);
     check_keys(L, 3, fn, {"colour", "section"});
@@ -325,7 +356,7 @@ int l_export_gltf(lua_State* L) {
     }
     lua_pop(L, 1);
     lua_getfield(L, 3, "section");
-    if (!lua_isnil(L, -1) && read_stress_section(L, lua_gettop(L), fn, sec)) o.section = &sec;
+    if (!lua_isnil(L, -1) && read_beam_sections(L, lua_gettop(L), fn, s, sections)) o.sections = &sections;
     lua_pop(L, 1);
   }
   save_gltf(s.model, lua_tostring(L, 2), o);

@@ -59,14 +59,14 @@ std::string gltf_bytes(const Model& m, const GltfOptions& o) {
   const std::string& by = o.colour;
   if (!gltf_colour_known(by))
     throw ModelError("export_gltf: no colour '" + by + "' (kind, axial, moment, stress, utilisation, s1)");
-  if ((by == "stress" || by == "utilisation") && !(o.section && o.section->A > 0))
+  if ((by == "stress" || by == "utilisation") && !(o.sections && o.sections->any()))
     throw ModelError("export_gltf: colour '" + by + "' needs a section (tendril.section.rod/tube/rect)");
-  if (by == "utilisation" && !(o.section->strength > 0))
+  if (by == "utilisation" && !o.sections->any_strength())
     throw ModelError("export_gltf: colour 'utilisation' needs a section with a material's strength");
   const Vec3* x = m.particles.position.data();
   const std::vector<BlockId> blocks = m.live_blocks();
   std::vector<BlockResults> results;
-  for (BlockId b : blocks) results.push_back(element_results(m, b, o.section));
+  for (BlockId b : blocks) results.push_back(element_results(m, b, o.sections ? o.sections->of(b) : nullptr));
   // The scale of the field: its largest magnitude over the model.
   double scale = 0;
   for (const BlockResults& r : results) {

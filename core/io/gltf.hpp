@@ -23,7 +23,7 @@ namespace tendril {
 // a field does not apply to is grey.
 struct GltfOptions {
   std::string colour = "kind";
-  const StressSection* section = nullptr;  // beams' stress and utilisation
+  const BeamSections* sections = nullptr;  // beams' stress and utilisation
 };
 
 // True for the names above.
@@ -32,7 +32,7 @@ bool gltf_colour_known(const std::string& name);
 std::array<float, 3> gltf_ramp(double t);
 
 // Throws ModelError when the colour is unknown, or is stress or
-// utilisation without a section (with a strength).
+// utilisation without any section (with a strength).
 std::string gltf_bytes(const Model& m, const GltfOptions& options);
 // Written whole or not at all; throws OutputError when it cannot be (io/atomic_file.hpp).
 void save_gltf(const Model& m, const std::string& path, const GltfOptions& options);

@@ -26,7 +26,7 @@ struct Cell {
 
 }  // namespace
 
-std::string vtk_string(const Model& m, const StressSection* section) {
+std::string vtk_string(const Model& m, const BeamSections* sections) {
   const Particles& P = m.particles;
   std::vector<std::uint32_t> index(P.capacity(), 0);
   std::vector<ParticleId> live;
@@ -38,14 +38,14 @@ std::string vtk_string(const Model& m, const StressSection* section) {
   std::vector<BlockId> blocks = m.live_blocks();
   std::vector<BlockResults> results;
   results.reserve(blocks.size());
-  for (BlockId b : blocks) results.push_back(element_results(m, b, section));
+  for (BlockId b : blocks) results.push_back(element_results(m, b, sections ? sections->of(b) : nullptr));
   std::vector<Cell> cells;
   std::size_t size = 0;
   for (std::size_t k = 0; k < blocks.size(); ++k) {
     for (const LineResult& l : results[k].lines) cells.push_back({blocks[k], &l, nullptr}), size += 3;
     for (const TriangleResult& t : results[k].triangles) cells.push_back({blocks[k], nullptr, &t}), size += 4;
   }
-  const bool stress = section && section->A > 0, utilisation = stress && section->strength > 0;
+  const bool stress = sections && sections->any(), utilisation = stress && sections->any_strength();
 
   std::string out = "# vtk DataFile Version 3.0\n";
   out += "tendril results, SI units: m, N, N m, Pa (membrane stresses N/m)\nASCII\nDATASET UNSTRUCTURED_GRID\n";
@@ -123,8 +123,8 @@ std::string vtk_string(const Model& m, const StressSection* section) {
   return out;
 }
 
-void save_vtk(const Model& m, const std::string& path, const StressSection* section) {
-  write_file_atomically(path, vtk_string(m, section));
+void save_vtk(const Model& m, const std::string& path, const BeamSections* sections) {
+  write_file_atomically(path, vtk_string(m, sections));
 }
 
 }  // namespace tendril

@@ -8,8 +8,8 @@
 // with cell data `block`, `axial`, `strain`, `slack`, `My`, `Mz`,
 // `torsion`, `moment`, `curvature`, and on CST triangles `warp`, `weft`,
 // `shear`, `s1`, `s2`, `d1`, `d2` (query/element_results.hpp; 0 where a
-// field does not apply). With a section for the beams, `stress` (and
-// with a strength `utilisation`) too. SI units: m, N, N m, Pa; membrane
+// field does not apply). With sections for the beams, `stress` (and
+// with a strength `utilisation`) too, 0 on beams without one. SI units: m, N, N m, Pa; membrane
 // stresses N/m.
 #include <string>
 
@@ -18,8 +18,8 @@
 
 namespace tendril {
 
-std::string vtk_string(const Model& m, const StressSection* beam_section = nullptr);
+std::string vtk_string(const Model& m, const BeamSections* sections = nullptr);
 // Written whole or not at all; throws OutputError when it cannot be (io/atomic_file.hpp).
-void save_vtk(const Model& m, const std::string& path, const StressSection* beam_section = nullptr);
+void save_vtk(const Model& m, const std::string& path, const BeamSections* sections = nullptr);
 
 }  // namespace tendril

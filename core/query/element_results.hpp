@@ -11,6 +11,7 @@
 //   and directions (per unit width, N/m, as membranes are in tendril).
 // The support reactions are the solver's (Solver::reaction), model-wide.
 #include <limits>
+#include <map>
 #include <vector>
 
 #include "model/model.hpp"
@@ -22,6 +23,24 @@ namespace tendril {
 struct StressSection {
   double A = 0, Wy = 0, Wz = 0;
   double strength = 0;  // [Pa]
+};
+
+// The sections of a model's beams for its outputs: one for every beam, or
+// one per block (a block listed takes its own; the others `all`, if set).
+struct BeamSections {
+  StressSection all;  // A == 0: none
+  std::map<BlockId, StressSection> by_block;
+  const StressSection* of(BlockId b) const {
+    auto it = by_block.find(b);
+    if (it != by_block.end()) return &it->second;
+    return all.A > 0 ? &all : nullptr;
+  }
+  bool any() const { return all.A > 0 || !by_block.empty(); }
+  bool any_strength() const {
+    bool some = all.A > 0 && all.strength > 0;
+    for (const auto& [b, s] : by_block) some |= s.strength > 0;
+    return some;
+  }
 };
 
 struct LineResult {

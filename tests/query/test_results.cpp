@@ -178,6 +178,14 @@ assert(#r.vertices == 19 and #r.elements == 20)
 local summary = m:summary(rod)   -- the most stressed beam: at mid-span
 assert(summary.max_stress == r.max_stress and summary.max_stress_block == b.id and summary.max_stress_particle == ps[11].id)
 assert(r.elements[10].at == ps[11] and r.elements[11].at == ps[11])
+-- Sections per beam, by handle or id: the same here; a cable takes none.
+local by_beam, by_id = m:summary({ [b] = rod }), m:summary({ [b.id] = rod })
+assert(by_beam.max_stress == summary.max_stress and by_id.max_utilisation == summary.max_utilisation)
+local c = m:cable(ps[1], ps[3], { EA = 1 })
+local ok, err = pcall(m.summary, m, { [c] = rod })
+assert(not ok and err:find("is a cable; sections give beams their stress", 1, true), err)
+ok, err = pcall(m.summary, m, { [99] = rod })
+assert(not ok and err:find("99", 1, true), err)
 local ok, err = pcall(m.results, m, b, { A = 1 })
 assert(not ok and err:find("Wy"), err)
 )") == "");
@@ -274,7 +282,7 @@ m:formulation(patch, "cst", { stress = { 0, 0 }, warp = { 1, 0, 0 }, analysis = 
 for _, p in ipairs(m:particles(patch)) do local x = m:position(p) m:set_position(p, { 1.01 * x[1], x[2], x[3] }) m:lock(p, "xyz") end
 assert(m:run{ tolerance = 1e-6, max_steps = 200000 }.converged)
 m:export_vtk(tendril.out("r.vtk"), rod)
-m:export_gltf(tendril.out("r.glb"), { colour = "utilisation", section = rod })
+m:export_gltf(tendril.out("r.glb"), { colour = "utilisation", section = { [beam] = rod } })   -- per beam
 for _, bad in ipairs{ { colour = "heat" }, { colour = "stress" } } do
   local ok, err = pcall(m.export_gltf, m, tendril.out("bad.glb"), bad)
   assert(not ok and err:find(bad.colour == "heat" and "'heat' is none of" or "needs a section", 1, true), err)
