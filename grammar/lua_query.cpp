@@ -133,6 +133,21 @@ int l_summary(lua_State* L) {
   return 1;
 }
 
+// The fields m:forces and m:results share for a bar, a cable or a beam
+// segment, set on the table on top of the stack.
+void set_link_fields(lua_State* L, Scene& s, ParticleId a, ParticleId b, double axial, double strain, bool slack) {
+  push_particle(L, s, a);
+  lua_setfield(L, -2, "a");
+  push_particle(L, s, b);
+  lua_setfield(L, -2, "b");
+  lua_pushnumber(L, axial);
+  lua_setfield(L, -2, "axial");
+  lua_pushnumber(L, strain);
+  lua_setfield(L, -2, "strain");
+  lua_pushboolean(L, slack);
+  lua_setfield(L, -2, "slack");
+}
+
 // m:forces(block) -> {segments = {{a =, b =, axial =, strain =, slack =}, ...},
 // vertices = {{particle =, curvature =, moment =}, ...}}: what the block
 // carries now (query/member_forces.hpp), in path order.
@@ -149,14 +164,7 @@ int l_forces(lua_State* L) {
   for (std::size_t k = 0; k < f.segments.size(); ++k) {
     const SegmentForce& e = f.segments[k];
     lua_createtable(L, 0, 5);
-    push_particle(L, s, e.a);
-    lua_setfield(L, -2, "a");
-    push_particle(L, s, e.b);
-    lua_setfield(L, -2, "b");
-    number("axial", e.axial);
-    number("strain", e.strain);
-    lua_pushboolean(L, e.slack);
-    lua_setfield(L, -2, "slack");
+    set_link_fields(L, s, e.a, e.b, e.axial, e.strain, e.slack);
     lua_rawseti(L, -2, lua_Integer(k + 1));
   }
   lua_setfield(L, -2, "segments");
@@ -236,14 +244,7 @@ int l_results(lua_State* L) {
   for (std::size_t k = 0; k < r.lines.size(); ++k) {
     const LineResult& e = r.lines[k];
     lua_createtable(L, 0, 14);
-    push_particle(L, s, e.a);
-    lua_setfield(L, -2, "a");
-    push_particle(L, s, e.b);
-    lua_setfield(L, -2, "b");
-    number("axial", e.axial);
-    number("strain", e.strain);
-    lua_pushboolean(L, e.slack);
-    lua_setfield(L, -2, "slack");
+    set_link_fields(L, s, e.a, e.b, e.axial, e.strain, e.slack);
     number("My", e.My);
     number("Mz", e.Mz);
     number("torsion", e.torsion);

@@ -6,10 +6,11 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 # clang and its runtime: the fuzzers of tests/fuzz (tools/fuzz.sh, libFuzzer).
 # calculix-ccx: the independent FE solver of bench/fe and the test fe-ccx.
+# python3-vtk9: VTK's own readers check tendril's VTK and glTF files (test vtk-python).
 packages=(cmake g++ ninja-build pkg-config libeigen3-dev liblua5.4-dev lua5.4
           libcgal-dev libtinyxml2-dev libopenmesh-dev doctest-dev gnuplot-nox
           libcivetweb-dev nlohmann-json3-dev chromium libcli11-dev libtinygltf-dev
-          slurm-wlm munge clang libclang-rt-14-dev calculix-ccx)
+          slurm-wlm munge clang libclang-rt-14-dev calculix-ccx python3-vtk9)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
