@@ -201,8 +201,7 @@ class Solver {
   // beams) as force couples across their beam segments, at positions x;
   // scale multiplies each force (dt^2 / m and the free axes: add_couples_to_x0).
   struct Couple {
-    ParticleId p, q;  // the moment's particle and the segment's other end
-    double share;     // the part of p's moment this segment carries
+    ParticleId p, q;  // the moment's particle and the segment's other end (a particle's couples are consecutive)
   };
   const std::vector<Couple>& couples() const;  // derived again when the model or a moment changed
   void accumulate_couples(const Vec3* x, Vec3* F) const;
