@@ -30,6 +30,7 @@
 #include "lua_readouts.hpp"
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
+#include "lua_strip.hpp"
 #include "model/model.hpp"
 #include "physics/settings_check.hpp"
 #include "physics/solver.hpp"
@@ -706,6 +707,7 @@ void register_model_meta(lua_State* L) {
   add_meshing_methods(L);
   add_multires_methods(L);
   add_clamp_methods(L);
+  add_strip_methods(L);
   lua_setfield(L, -2, "__index");
   lua_pop(L, 1);
   register_handle_metatables(L);

@@ -102,6 +102,60 @@ double Mattiasson::error(int k) const {
   return std::max(std::abs(u() / kTable[k][0] - 1), std::abs(w() / kTable[k][1] - 1));
 }
 
+StripCantilever::StripCantilever(int n, int across) {
+  const double t = 0.01, nu = 0.3;
+  const StripMaterial mat{(1 / kWidth) * 12 * (1 - nu * nu) / (t * t * t), t, nu, 0};
+  std::vector<std::vector<Vec3>> grid(std::size_t(across) + 1);
+  for (int r = 0; r <= across; ++r)
+    for (int c = 0; c <= n; ++c) grid[std::size_t(r)].push_back(Vec3(double(c) / n, kWidth * r / across, 0));
+  for (const auto& row : grid) {
+    ps.emplace_back();
+    for (const Vec3& x : row) ps.back().push_back(m.add_particle(x));
+  }
+  struct Direct : StripMaker {
+    Model& m;
+    explicit Direct(Model& m) : m(m) {}
+    BlockId beam(const StripMember& s, const std::vector<ParticleId>& p) override {
+      return m.add_beam(p, Section{s.EA, s.EI, 0, s.line_mass});
+    }
+    BlockId bar(ParticleId a, ParticleId b, double EA) override { return m.add_elastic_bar(a, b, Section{EA, 0, 0, 0}); }
+    std::size_t planarity(double w, const std::vector<ParticleId>& c) override {
+      Goal g;
+      g.kind = Goal::Planar;
+      g.i = c[0], g.j = c[1], g.k = c[2], g.l = c[3];
+      g.weight = w;
+      return m.add_goal(g);
+    }
+  } direct(m);
+  members = make_strip(ps, strip_grillage(grid, mat), direct);
+  for (std::size_t r = 0; r < ps.size(); ++r) {
+    m.set_lock(ps[r].front(), kLockTranslation);
+    m.set_clamp(ps[r].front(), members.rows[r], Vec3::UnitX());
+  }
+}
+
+double StripCantilever::share(std::size_t row) const {
+  const double across = double(ps.size() - 1);
+  return (row == 0 || row + 1 == ps.size()) ? 0.5 / across : 1 / across;
+}
+
+void StripCantilever::set_tip_load(const Vec3& total) {
+  for (std::size_t r = 0; r < ps.size(); ++r) m.set_load(ps[r].back(), share(r) * total);
+}
+
+void StripCantilever::set_tip_moment(const Vec3& total) {
+  for (std::size_t r = 0; r < ps.size(); ++r) m.set_moment(ps[r].back(), share(r) * total);
+}
+
+double StripCantilever::error(int k) const {
+  double e = 0;
+  for (const auto& row : ps) {
+    const Vec3& x = m.particles.position[row.back()];
+    e = std::max({e, std::abs((1 - x.x()) / Mattiasson::kTable[k][0] - 1), std::abs(-x.z() / Mattiasson::kTable[k][1] - 1)});
+  }
+  return e;
+}
+
 BentCantilever::BentCantilever(int n, double load) {
   const double R = 100;
   for (int i = 0; i <= n; ++i) {

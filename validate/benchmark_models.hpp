@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "model/strip_grillage.hpp"
 #include "physics/solver.hpp"
 
 namespace tendril::validate {
@@ -91,6 +92,25 @@ struct Mattiasson {
   double u() const;              // (L - x_tip) / L
   double w() const;              // -y_tip / L
   // The larger relative error of u and w against kTable[k] (PL^2/EI = k + 1).
+  double error(int k) const;
+};
+
+// Mattiasson's cantilever as a bending strip (model/strip_grillage.hpp):
+// L = 1 m, W = 0.2 m, t = 10 mm, nu = 0.3, E such that D W = 1 N m^2 (the
+// beam's EI), n quads along and `across` quads across, every row's root
+// held and clamped along x. Tip loads and moments go on the rows' tips by
+// their share of the width.
+struct StripCantilever {
+  static constexpr double kWidth = 0.2;
+  Model m;
+  std::vector<std::vector<ParticleId>> ps;  // ps[row][along]
+  StripMembers members;
+  StripCantilever(int n, int across);
+  double share(std::size_t row) const;  // the row's tributary width over W
+  void set_tip_load(const Vec3& total);
+  void set_tip_moment(const Vec3& total);
+  // The larger relative error of u and w of the worst row against
+  // Mattiasson's table (tip load -z, PL^2/EI = k + 1).
   double error(int k) const;
 };
 
