@@ -26,10 +26,12 @@
 #include "lua_patch_formulation.hpp"
 #include "lua_goals.hpp"
 #include "lua_handles.hpp"
+#include "lua_import.hpp"
 #include "lua_query.hpp"
 #include "lua_readouts.hpp"
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
+#include "lua_section_args.hpp"
 #include "lua_strip.hpp"
 #include "model/model.hpp"
 #include "physics/settings_check.hpp"
@@ -65,38 +67,6 @@ ParticleId field_particle(lua_State* L, int idx, const char* key, Scene& s, cons
     lua_pop(L, 1);
     throw;
   }
-}
-
-// Section from {EA=, EI=} or {E=, A=, I=}, plus prestress and line_mass.
-Section read_section(lua_State* L, int idx, const char* fn, bool beam) {
-  Section s;
-  const bool by_products = has_field(L, idx, "EA") || has_field(L, idx, "EI");
-  const bool by_modulus = has_field(L, idx, "E");
-  if (by_products && by_modulus) throw LuaArgError(std::string(fn) + ": give EA/EI or E with A/I, not both");
-  if (by_modulus) {
-    const double E = field_number(L, idx, "E", fn, 0);
-    if (!has_field(L, idx, "A")) key_error(fn, "A", "is required with E");
-    s.EA = E * field_number(L, idx, "A", fn, 0);
-    if (beam) {
-      if (!has_field(L, idx, "I")) key_error(fn, "I", "is required with E for a beam");
-      s.EI = E * field_number(L, idx, "I", fn, 0);
-    }
-  } else {
-    if (!has_field(L, idx, "EA")) key_error(fn, "EA", "is required (or E with A)");
-    s.EA = field_number(L, idx, "EA", fn, 0);
-    if (beam) {
-      if (!has_field(L, idx, "EI")) key_error(fn, "EI", "is required for a beam (or E with I)");
-      s.EI = field_number(L, idx, "EI", fn, 0);
-    }
-  }
-  s.prestress = field_number(L, idx, "prestress", fn, 0);
-  s.line_mass = field_number(L, idx, "line_mass", fn, 0);
-  return s;
-}
-
-// A section as the command's four section arguments (EA, EI, prestress, line_mass).
-void append_section(command::Args& args, const Section& sec) {
-  for (double x : {sec.EA, sec.EI, sec.prestress, sec.line_mass}) args.push_back(Value::of_number(x));
 }
 
 std::uint8_t parse_axes(const std::string& axes, const char* fn) {
@@ -708,6 +678,7 @@ void register_model_meta(lua_State* L) {
   add_multires_methods(L);
   add_clamp_methods(L);
   add_strip_methods(L);
+  add_import_methods(L);
   lua_setfield(L, -2, "__index");
   lua_pop(L, 1);
   register_handle_metatables(L);
@@ -726,6 +697,7 @@ void open_tendril(lua_State* L, const SceneOptions& options) {
   add_csv(L);
   add_sections(L);
   add_file_functions(L);
+  add_import_function(L);
   add_rule_constructor(L);
   lua_pushinteger(L, options.seed);
   lua_setfield(L, -2, "seed");
