@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "io/atomic_file.hpp"
@@ -24,9 +25,24 @@ struct Cell {
   const TriangleResult* triangle = nullptr;
 };
 
-}  // namespace
+// A named array of the grid: one or three components per cell or point.
+struct Array {
+  std::string name;
+  int components = 1;
+  bool integer = false;
+  std::vector<double> values;
+};
 
-std::string vtk_string(const Model& m, const BeamSections* sections) {
+// The model's grid, whichever file it goes to: points, cells (connectivity
+// and VTK type) and the cell and point arrays.
+struct Grid {
+  std::vector<Vec3> points;
+  std::vector<std::vector<std::uint32_t>> cells;
+  std::vector<int> types;  // VTK_LINE 3, VTK_TRIANGLE 5
+  std::vector<Array> cell_data, point_data;
+};
+
+Grid grid_of(const Model& m, const BeamSections* sections) {
   const Particles& P = m.particles;
   std::vector<std::uint32_t> index(P.capacity(), 0);
   std::vector<ParticleId> live;
@@ -40,37 +56,22 @@ std::string vtk_string(const Model& m, const BeamSections* sections) {
   results.reserve(blocks.size());
   for (BlockId b : blocks) results.push_back(element_results(m, b, sections ? sections->of(b) : nullptr));
   std::vector<Cell> cells;
-  std::size_t size = 0;
   for (std::size_t k = 0; k < blocks.size(); ++k) {
-    for (const LineResult& l : results[k].lines) cells.push_back({blocks[k], &l, nullptr}), size += 3;
-    for (const TriangleResult& t : results[k].triangles) cells.push_back({blocks[k], nullptr, &t}), size += 4;
+    for (const LineResult& l : results[k].lines) cells.push_back({blocks[k], &l, nullptr});
+    for (const TriangleResult& t : results[k].triangles) cells.push_back({blocks[k], nullptr, &t});
   }
   const bool stress = sections && sections->any(), utilisation = stress && sections->any_strength();
 
-  std::string out = "# vtk DataFile Version 3.0\n";
-  out += "tendril results, SI units: m, N, N m, Pa (membrane stresses N/m)\nASCII\nDATASET UNSTRUCTURED_GRID\n";
-  out += "POINTS " + std::to_string(live.size()) + " double\n";
-  for (ParticleId p : live) {
-    put(out, P.position[p].x()), out += ' ', put(out, P.position[p].y()), out += ' ', put(out, P.position[p].z());
-    out += '\n';
-  }
-  out += "CELLS " + std::to_string(cells.size()) + ' ' + std::to_string(size) + '\n';
+  Grid g;
+  for (ParticleId p : live) g.points.push_back(P.position[p]);
   for (const Cell& c : cells) {
-    if (c.line)
-      out += "2 " + std::to_string(index[c.line->a]) + ' ' + std::to_string(index[c.line->b]) + '\n';
-    else
-      out += "3 " + std::to_string(index[c.triangle->i]) + ' ' + std::to_string(index[c.triangle->j]) + ' ' +
-             std::to_string(index[c.triangle->k]) + '\n';
+    if (c.line) g.cells.push_back({index[c.line->a], index[c.line->b]}), g.types.push_back(3);
+    else g.cells.push_back({index[c.triangle->i], index[c.triangle->j], index[c.triangle->k]}), g.types.push_back(5);
   }
-  out += "CELL_TYPES " + std::to_string(cells.size()) + '\n';
-  for (const Cell& c : cells) out += c.line ? "3\n" : "5\n";  // VTK_LINE, VTK_TRIANGLE
-
-  out += "CELL_DATA " + std::to_string(cells.size()) + '\n';
   auto scalars = [&](const char* name, auto&& value) {
-    out += "SCALARS ";
-    out += name;
-    out += " double 1\nLOOKUP_TABLE default\n";
-    for (const Cell& c : cells) put(out, value(c)), out += '\n';
+    Array a{name, 1, false, {}};
+    for (const Cell& c : cells) a.values.push_back(value(c));
+    g.cell_data.push_back(std::move(a));
   };
   auto line = [](double LineResult::*f) {
     return [f](const Cell& c) { return c.line ? c.line->*f : 0.0; };
@@ -97,34 +98,104 @@ std::string vtk_string(const Model& m, const BeamSections* sections) {
   scalars("s1", membrane(&TriangleResult::s1));
   scalars("s2", membrane(&TriangleResult::s2));
   for (const char* name : {"d1", "d2"}) {
-    out += "VECTORS ";
-    out += name;
-    out += " double\n";
+    Array a{name, 3, false, {}};
     for (const Cell& c : cells) {
       const Vec3 d = c.triangle ? (name[1] == '1' ? c.triangle->d1 : c.triangle->d2) : Vec3::Zero();
-      put(out, d.x()), out += ' ', put(out, d.y()), out += ' ', put(out, d.z()), out += '\n';
+      a.values.insert(a.values.end(), {d.x(), d.y(), d.z()});
     }
+    g.cell_data.push_back(std::move(a));
   }
 
-  out += "POINT_DATA " + std::to_string(live.size()) + '\n';
-  out += "SCALARS locked int 1\nLOOKUP_TABLE default\n";
-  for (ParticleId p : live) out += P.lock[p] ? "1\n" : "0\n";
-  out += "VECTORS reaction double\n";
-  for (ParticleId p : live) {  // Solver::reaction: minus the residual force along the locked axes
-    const Vec3 r = -P.force[p].cwiseProduct(Vec3::Ones() - free_axes(P.lock[p]));
-    put(out, r.x()), out += ' ', put(out, r.y()), out += ' ', put(out, r.z()), out += '\n';
-  }
-  out += "VECTORS reaction_moment double\n";
+  Array locked{"locked", 1, true, {}}, reaction{"reaction", 3, false, {}}, moment{"reaction_moment", 3, false, {}};
   for (ParticleId p : live) {
-    const Vec3 r = P.rot_degree[p] ? Vec3(-P.torque[p].cwiseProduct(Vec3::Ones() - free_rotation_axes(P.lock[p])))
+    locked.values.push_back(P.lock[p] ? 1 : 0);
+    // Solver::reaction: minus the residual force along the locked axes
+    const Vec3 r = -P.force[p].cwiseProduct(Vec3::Ones() - free_axes(P.lock[p]));
+    reaction.values.insert(reaction.values.end(), {r.x(), r.y(), r.z()});
+    const Vec3 t = P.rot_degree[p] ? Vec3(-P.torque[p].cwiseProduct(Vec3::Ones() - free_rotation_axes(P.lock[p])))
                                    : Vec3::Zero();
-    put(out, r.x()), out += ' ', put(out, r.y()), out += ' ', put(out, r.z()), out += '\n';
+    moment.values.insert(moment.values.end(), {t.x(), t.y(), t.z()});
   }
+  g.point_data = {std::move(locked), std::move(reaction), std::move(moment)};
+  return g;
+}
+
+// Values of an array, `components` per line (legacy) or space-separated (XML).
+void put_values(std::string& out, const Array& a, char separator) {
+  for (std::size_t k = 0; k < a.values.size(); ++k) {
+    if (a.integer) out += std::to_string(long(a.values[k]));
+    else put(out, a.values[k]);
+    out += (separator == '\n' && (k + 1) % std::size_t(a.components) != 0) ? ' ' : separator;
+  }
+}
+
+}  // namespace
+
+std::string vtk_string(const Model& m, const BeamSections* sections) {
+  const Grid g = grid_of(m, sections);
+  std::size_t size = 0;
+  for (const auto& c : g.cells) size += c.size() + 1;
+  std::string out = "# vtk DataFile Version 3.0\n";
+  out += "tendril results, SI units: m, N, N m, Pa (membrane stresses N/m)\nASCII\nDATASET UNSTRUCTURED_GRID\n";
+  out += "POINTS " + std::to_string(g.points.size()) + " double\n";
+  for (const Vec3& x : g.points) put(out, x.x()), out += ' ', put(out, x.y()), out += ' ', put(out, x.z()), out += '\n';
+  out += "CELLS " + std::to_string(g.cells.size()) + ' ' + std::to_string(size) + '\n';
+  for (const auto& c : g.cells) {
+    out += std::to_string(c.size());
+    for (std::uint32_t i : c) out += ' ' + std::to_string(i);
+    out += '\n';
+  }
+  out += "CELL_TYPES " + std::to_string(g.cells.size()) + '\n';
+  for (int t : g.types) out += std::to_string(t) + '\n';
+  auto arrays = [&](const std::vector<Array>& list) {
+    for (const Array& a : list) {
+      if (a.components == 3) out += "VECTORS " + a.name + " double\n";
+      else out += "SCALARS " + a.name + (a.integer ? " int" : " double") + " 1\nLOOKUP_TABLE default\n";
+      put_values(out, a, '\n');
+    }
+  };
+  out += "CELL_DATA " + std::to_string(g.cells.size()) + '\n';
+  arrays(g.cell_data);
+  out += "POINT_DATA " + std::to_string(g.points.size()) + '\n';
+  arrays(g.point_data);
+  return out;
+}
+
+std::string vtu_string(const Model& m, const BeamSections* sections) {
+  const Grid g = grid_of(m, sections);
+  std::string out = "<?xml version=\"1.0\"?>\n<!-- tendril results, SI units: m, N, N m, Pa (membrane stresses N/m) -->\n";
+  out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n";
+  out += "<Piece NumberOfPoints=\"" + std::to_string(g.points.size()) + "\" NumberOfCells=\"" +
+         std::to_string(g.cells.size()) + "\">\n";
+  auto array = [&](const Array& a) {
+    out += std::string("<DataArray type=\"") + (a.integer ? "Int32" : "Float64") + "\" Name=\"" + a.name +
+           "\" NumberOfComponents=\"" + std::to_string(a.components) + "\" format=\"ascii\">\n";
+    put_values(out, a, ' ');
+    out += "\n</DataArray>\n";
+  };
+  out += "<PointData>\n";
+  for (const Array& a : g.point_data) array(a);
+  out += "</PointData>\n<CellData>\n";
+  for (const Array& a : g.cell_data) array(a);
+  out += "</CellData>\n<Points>\n";
+  Array points{"Points", 3, false, {}};
+  for (const Vec3& x : g.points) points.values.insert(points.values.end(), {x.x(), x.y(), x.z()});
+  array(points);
+  out += "</Points>\n<Cells>\n";
+  Array connectivity{"connectivity", 1, true, {}}, offsets{"offsets", 1, true, {}}, types{"types", 1, true, {}};
+  for (std::size_t k = 0; k < g.cells.size(); ++k) {
+    for (std::uint32_t i : g.cells[k]) connectivity.values.push_back(i);
+    offsets.values.push_back(double(connectivity.values.size()));
+    types.values.push_back(g.types[k]);
+  }
+  for (const Array* a : {&connectivity, &offsets, &types}) array(*a);
+  out += "</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   return out;
 }
 
 void save_vtk(const Model& m, const std::string& path, const BeamSections* sections) {
-  write_file_atomically(path, vtk_string(m, sections));
+  const bool xml = path.size() >= 4 && path.compare(path.size() - 4, 4, ".vtu") == 0;
+  write_file_atomically(path, xml ? vtu_string(m, sections) : vtk_string(m, sections));
 }
 
 }  // namespace tendril
