@@ -110,7 +110,7 @@ int l_summary(lua_State* L) {
   set("beam_length", beam_length);
   set("min_bending_radius", min_radius);
   set("max_strain", max_strain);
-  set("steps", double(s.solver.steps()));
+  set("steps", double(m.steps));
   // With a section: the most stressed beam, where, and its utilisation.
   if (has_section) {
     double worst = 0, utilisation = 0;

@@ -26,8 +26,8 @@ const Readout kReadouts[] = {
     {"closed", Readout::Block, [](lua_State* L, Scene& s, std::uint32_t b) { lua_pushboolean(L, s.model.blocks[b].closed); }},
     {"residual", Readout::Model, [](lua_State* L, Scene& s, std::uint32_t) { lua_pushnumber(L, s.solver.residual()); }},
     {"steps", Readout::Model,
-     [](lua_State* L, Scene& s, std::uint32_t) { lua_pushinteger(L, lua_Integer(s.solver.steps())); }},
-    {"time", Readout::Model, [](lua_State* L, Scene& s, std::uint32_t) { lua_pushnumber(L, s.solver.time()); }},
+     [](lua_State* L, Scene& s, std::uint32_t) { lua_pushinteger(L, lua_Integer(s.model.steps)); }},
+    {"time", Readout::Model, [](lua_State* L, Scene& s, std::uint32_t) { lua_pushnumber(L, s.model.time); }},
 };
 
 int l_readout(lua_State* L) {

@@ -312,6 +312,8 @@ std::string write_document(const Model& m, const SolverSettings& s) {
   Writer w(out);
   w.open("tendril");
   w.attr("version", unsigned(kVersion));
+  w.attr("steps", std::to_string(m.steps).c_str());
+  w.attr("time", m.time);
 
   w.open("solver");
   w.attr("dt", s.dt);
@@ -598,6 +600,8 @@ struct GoalRecord {
 };
 
 struct Document {
+  std::uint64_t steps = 0;  // how far the model was integrated (absent before: 0)
+  double time = 0;
   SolverSettings settings;
   Vec3 gravity = Vec3::Zero();
   std::vector<ParticleRecord> particles;  // ascending id
@@ -1107,6 +1111,13 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
     unsigned version = a.index("version");
     if (version != kVersion)
       a.bad("version", "is " + std::to_string(version) + "; this build reads version " + std::to_string(kVersion));
+    if (const char* steps = a.raw("steps")) {
+      const std::string_view v(steps);
+      const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), d.steps);
+      if (ec != std::errc() || end != v.data() + v.size()) a.bad("steps", "is not a whole number >= 0: " + quoted(steps));
+    }
+    d.time = a.real("time", 0);
+    if (!(d.time >= 0)) a.bad("time", "must be >= 0");
     a.done();
   }
   std::map<std::string, const tinyxml2::XMLElement*> sections;
@@ -1321,6 +1332,8 @@ void build(const Reader& reader, const Document& d, Model& m) {
     }
   }
   m.gravity = d.gravity;
+  m.steps = d.steps;
+  m.time = d.time;
   for (const JointRecord& j : d.joints) {
     auto it = id_of.find(j.particle);
     if (it == id_of.end()) reader.fail(j.element, "attribute 'particle': no particle " + std::to_string(j.particle));

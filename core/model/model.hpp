@@ -360,6 +360,12 @@ class Model {
   // a solver that caches a factorisation compares it in O(1) per step.
   std::uint64_t revision = 0;
 
+  // How far the model has been integrated: steps and simulated time [s]
+  // over every run and solver, kept by the model database (a loaded model
+  // goes on counting); not undone by rollback (steps are not productions).
+  std::uint64_t steps = 0;
+  double time = 0;
+
   GMap map;
   Particles particles;
   LoggedVector<Block> blocks;

@@ -27,15 +27,17 @@ void Solver::integrate_mixed() {
     mixed_peak_ = residual_;
     reset_motion();
   }
+  const double dt = mixed_implicit_ ? vie_dt() : settings.dt;
   if (mixed_implicit_) {
     if (settings.mixed_implicit == Integrator::ProjectiveDynamics) integrate_projective();
     else integrate_vie();
-    time_ += vie_dt();
   } else {
     integrate_leapfrog();
-    time_ += settings.dt;
   }
   ++steps_;
+  time_ += dt;
+  ++model_.steps;
+  model_.time += dt;
 }
 
 }  // namespace tendril

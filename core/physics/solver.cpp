@@ -110,6 +110,8 @@ void Solver::step() {
     fused_kick_drift(settings.integrator == Integrator::SymplecticEuler || half_step_);
     ++steps_;
     time_ += settings.dt;
+    ++model_.steps;
+    model_.time += settings.dt;
     return;
   }
   compute_forces();
@@ -125,8 +127,11 @@ void Solver::step() {
     case Integrator::ProjectiveDynamics: integrate_projective(); break;
     case Integrator::Mixed: integrate_mixed(); return;  // counts its own step and time
   }
+  const double dt = implicit(settings.integrator) ? vie_dt() : settings.dt;
   ++steps_;
-  time_ += implicit(settings.integrator) ? vie_dt() : settings.dt;
+  time_ += dt;
+  ++model_.steps;
+  model_.time += dt;
 }
 
 void Solver::size_scratch() {

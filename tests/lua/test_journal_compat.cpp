@@ -6,6 +6,8 @@
 // rotations began to act (issue 12: as couples across its 3-DOF beam
 // segments, where it used to be ignored): its beam keeps m:torque after
 // switching to 3 DOF, and only that beam's particles moved.
+// The v1-*.xml roots carry the steps and simulated time the journals
+// integrate since the model database keeps them (issue 14).
 #include <doctest/doctest.h>
 
 #include <filesystem>
