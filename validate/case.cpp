@@ -1,9 +1,26 @@
 #include "case.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
 namespace tendril::validate {
+
+Outcome relax_load_steps(Solver& solver, const std::vector<int>& steps, const std::function<void(int)>& set,
+                         const std::function<double(int)>& error, double tolerance, std::uint64_t max_steps) {
+  Outcome out;
+  out.converged = true;
+  for (int k : steps) {
+    set(k);
+    const Outcome o = relax(solver, tolerance, max_steps);
+    out.steps += o.steps;
+    out.force_evaluations += o.force_evaluations;
+    out.wall_ms += o.wall_ms;
+    out.converged = out.converged && o.converged;
+    out.error = std::max(out.error, error(k));
+  }
+  return out;
+}
 
 Outcome relax(Solver& solver, double tolerance, std::uint64_t max_steps) {
   const std::uint64_t evaluations = solver.force_evaluations();

@@ -82,6 +82,12 @@ struct Case {
 // error: steps, force evaluations, wall time of the run, convergence.
 Outcome relax(Solver& solver, double tolerance, std::uint64_t max_steps);
 
+// Load steps, each relaxed from the last equilibrium: for every k, set(k)
+// applies the load, relax(solver, tolerance, max_steps) runs, and error(k)
+// measures; the outcome adds up the runs and keeps the largest error.
+Outcome relax_load_steps(Solver& solver, const std::vector<int>& steps, const std::function<void(int)>& set,
+                         const std::function<double(int)>& error, double tolerance, std::uint64_t max_steps);
+
 // |measured / exact - 1|
 double relative_error(double measured, double exact);
 

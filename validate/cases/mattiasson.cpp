@@ -17,18 +17,9 @@ Outcome run_mattiasson(const Setting& setting) {
   Mattiasson c(setting.segments, setting.formulation == "beam-6dof" ? 6 : 3);
   Solver solver(c.m);
   solver.settings = setting.solver;
-  Outcome out;
-  out.converged = true;
-  for (int k : {1, 4, 9}) {  // PL^2/EI = k + 1
-    c.set_load(k + 1);
-    const Outcome o = relax(solver, 1e-8, 2'000'000);
-    out.steps += o.steps;
-    out.force_evaluations += o.force_evaluations;
-    out.wall_ms += o.wall_ms;
-    out.converged = out.converged && o.converged;
-    out.error = std::max(out.error, c.error(k));
-  }
-  return out;
+  // PL^2/EI = k + 1
+  return relax_load_steps(
+      solver, {1, 4, 9}, [&](int k) { c.set_load(k + 1); }, [&](int k) { return c.error(k); }, 1e-8, 2'000'000);
 }
 
 }  // namespace
