@@ -14,6 +14,7 @@
 #include "lua_commands.hpp"
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
+#include "lua_section_args.hpp"
 #include "model/strip_grillage.hpp"
 
 namespace tendril::lua {
@@ -59,7 +60,7 @@ double field_positive(lua_State* L, int idx, const char* key, const char* fn) {
   return x;
 }
 
-// Pushes {p, ...} (or {{p, ...}, ...}) of handles.
+// Pushes a list of handles: particles, blocks or goals.
 void push_list(lua_State* L, Scene& s, command::Returns kind, const std::vector<std::uint64_t>& items) {
   lua_createtable(L, int(items.size()), 0);
   for (std::size_t k = 0; k < items.size(); ++k) {
@@ -131,13 +132,14 @@ int l_strip(lua_State* L) {
     Commands(lua_State* L, Scene& s, const char* fn) : L(L), s(s), fn(fn) {}
     BlockId beam(const StripMember& m, const std::vector<ParticleId>& ps) override {
       command::Args args = {Value::of_id(0)};  // open
-      for (double x : {m.EA, m.EI, 0.0, m.line_mass}) args.push_back(Value::of_number(x));
+      append_section(args, Section{m.EA, m.EI, 0, m.line_mass});
       args.push_back(Value::of_ids({ps.begin(), ps.end()}));
       return apply_command(L, s, "beam", std::move(args), fn).ids[0];
     }
     BlockId bar(ParticleId a, ParticleId b, double EA) override {
       command::Args args = {Value::of_id(a), Value::of_id(b)};
-      for (double x : {EA, 0.0, 0.0, 0.0, 0.0}) args.push_back(Value::of_number(x));  // EI, prestress, line_mass, rest
+      append_section(args, Section{EA, 0, 0, 0});
+      args.push_back(Value::of_number(0));  // rest length: as built
       return apply_command(L, s, "bar", std::move(args), fn).ids[0];
     }
     std::size_t planarity(double w, const std::vector<ParticleId>& c) override {
