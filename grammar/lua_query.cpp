@@ -8,6 +8,7 @@
 #include "io/gltf.hpp"
 #include "io/vtk.hpp"
 #include "query/element_results.hpp"
+#include "query/fabric_utilisation.hpp"
 #include "query/member_forces.hpp"
 #include "lua_commands.hpp"
 #include "lua_rules.hpp"
@@ -234,8 +235,19 @@ int l_results(lua_State* L) {
   const char* fn = "results";
   Scene& s = check_scene(L, fn);
   const BlockId b = check_block(L, 2, s, fn);
+  // A patch of fabric: {strength_warp =, strength_weft =} (tendril.fabric);
+  // a beam: a section.
+  double strength_warp = 0, strength_weft = 0;
+  const bool fabric = lua_istable(L, 3) && s.model.blocks[b].kind == BlockKind::Patch;
+  if (fabric) {
+    for (auto [key, strength] : {std::pair{"strength_warp", &strength_warp}, std::pair{"strength_weft", &strength_weft}}) {
+      if (!has_field(L, 3, key)) key_error(fn, key, "is required for a patch's utilisation (tendril.fabric gives it)");
+      *strength = field_number(L, 3, key, fn, 0);
+      if (!(*strength > 0 && std::isfinite(*strength))) key_error(fn, key, "must be > 0 [N/m]");
+    }
+  }
   StressSection sec;
-  const bool has_section = read_stress_section(L, 3, fn, sec);
+  const bool has_section = !fabric && read_stress_section(L, 3, fn, sec);
   const BlockResults r = element_results(s.model, b, has_section ? &sec : nullptr);
   auto number = [&](const char* key, double x) { lua_pushnumber(L, x), lua_setfield(L, -2, key); };
   double max_axial = 0, max_moment = 0, max_stress = 0, max_utilisation = 0;
@@ -294,13 +306,18 @@ int l_results(lua_State* L) {
     lua_setfield(L, -2, "d1");
     push_vec3(L, t.d2);
     lua_setfield(L, -2, "d2");
+    if (fabric) {
+      const double u = fabric_utilisation(t, strength_warp, strength_weft);
+      number("utilisation", u);
+      max_utilisation = std::max(max_utilisation, u);
+    }
     lua_rawseti(L, -2, lua_Integer(k + 1));
   }
   lua_setfield(L, -2, "triangles");
   number("max_axial", max_axial);
   number("max_moment", max_moment);
   if (has_section) number("max_stress", max_stress);
-  if (has_section && sec.strength > 0) number("max_utilisation", max_utilisation);
+  if ((has_section && sec.strength > 0) || fabric) number("max_utilisation", max_utilisation);
   return 1;
 }
 

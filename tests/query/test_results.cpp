@@ -124,6 +124,18 @@ for k, t in ipairs(r.triangles) do
   assert(math.abs(t.s1 - 8) < 1e-9 and math.abs(t.s2 - 2.4) < 1e-9)
   assert(math.abs(math.abs(t.d1[1]) - 1) < 1e-9 and math.abs(math.abs(t.d2[2]) - 1) < 1e-9)
 end
+-- With a fabric's strengths: utilisation = max(warp / strength_warp, weft /
+-- strength_weft) = max(8 / 100, 2.4 / 20) = 0.12; compression counts 0.
+local u = m:results(patch, { strength_warp = 100, strength_weft = 20 })
+for k, t in ipairs(u.triangles) do assert(math.abs(t.utilisation - 0.12) < 1e-9, k .. ": " .. t.utilisation) end
+assert(math.abs(u.max_utilisation - 0.12) < 1e-9)
+assert(m:results(patch).triangles[1].utilisation == nil, "no strength, no utilisation")
+local fabric = tendril.fabric("pvc_polyester")
+assert(math.abs(m:results(patch, fabric).max_utilisation - 8 / fabric.strength_warp) < 1e-15)
+for _, p in ipairs(m:particles(patch)) do local x = m:position(p) m:set_position(p, { x[1] / 1.01 / 1.01, x[2], x[3] }) end
+assert(m:results(patch, { strength_warp = 100, strength_weft = 20 }).max_utilisation == 0, "compressed: 0")
+local ok, err = pcall(m.results, m, patch, { strength_warp = 100 })
+assert(not ok and err:find("results: 'strength_weft' is required"), err)
 )") == "");
 }
 
