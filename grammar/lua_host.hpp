@@ -57,6 +57,7 @@ struct SceneReport {
   bool stepped = false;       // the scene called m:run{} or m:step()
   bool ran = false;           // the scene called m:run{}
   bool converged = true;      // the last m:run{} converged
+  std::string verdict = "none";  // its verdict (physics/run_verdict.hpp)
   std::string last_run;       // how the last m:run{} ended, in words
   std::string usage_error;    // set when the scene was given a --param it does not take
 };

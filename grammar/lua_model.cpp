@@ -434,63 +434,86 @@ int l_settings(lua_State* L) {
 }
 
 void push_run_result(lua_State* L, const RunResult& r) {
-  lua_createtable(L, 0, 3);
+  lua_createtable(L, 0, 6);
   lua_pushinteger(L, lua_Integer(r.steps));
   lua_setfield(L, -2, "steps");
   lua_pushnumber(L, r.residual);
   lua_setfield(L, -2, "residual");
   lua_pushboolean(L, r.converged);
   lua_setfield(L, -2, "converged");
+  lua_pushstring(L, verdict_name(r.verdict));
+  lua_setfield(L, -2, "verdict");
+  lua_pushnumber(L, r.force_scale);
+  lua_setfield(L, -2, "force_scale");
+  lua_pushnumber(L, r.relative_residual);
+  lua_setfield(L, -2, "relative_residual");
 }
 
 int l_run(lua_State* L) {
   const char* fn = "run";
   Scene& s = check_scene(L, fn);
-  double tolerance = 1e-3;
+  RunLimits limits;  // tolerance 1e-3 N, no relative rule
   double max_steps = 100000;
   if (!lua_isnoneornil(L, 2)) {
     check_table(L, 2, fn);
-    check_keys(L, 2, fn, {"tolerance", "max_steps"});
-    tolerance = field_number(L, 2, "tolerance", fn, tolerance);
+    check_keys(L, 2, fn, {"tolerance", "relative", "max_steps"});
+    // A relative tolerance alone is the only rule; with both, either suffices.
+    auto given = [&](const char* key) {
+      lua_getfield(L, 2, key);
+      const bool is = !lua_isnil(L, -1);
+      lua_pop(L, 1);
+      return is;
+    };
+    const bool absolute_given = given("tolerance"), relative_given = given("relative");
+    limits.relative = field_number(L, 2, "relative", fn, 0);
+    if (relative_given && !(limits.relative > 0 && limits.relative < 1))
+      key_error(fn, "relative", "must be > 0 and < 1");
+    if (relative_given && !absolute_given) limits.tolerance = 0;
+    else {
+      limits.tolerance = field_number(L, 2, "tolerance", fn, limits.tolerance);
+      if (!(limits.tolerance > 0)) key_error(fn, "tolerance", "must be > 0");
+    }
     max_steps = field_number(L, 2, "max_steps", fn, max_steps);
   }
-  if (!(tolerance > 0)) key_error(fn, "tolerance", "must be > 0");
   if (!(max_steps >= 0) || max_steps != std::floor(max_steps)) key_error(fn, "max_steps", "must be an integer >= 0");
   auto cap = std::uint64_t(max_steps);
   const bool capped_by_option = s.options->max_steps >= 0 && std::uint64_t(s.options->max_steps) < cap;
   if (capped_by_option) cap = std::uint64_t(s.options->max_steps);
+  limits.max_steps = cap;
   begin_stepping();
-  RunProgress meter(s.options->progress, tolerance, cap, capped_by_option);
+  RunProgress meter(s.options->progress, limits, cap, capped_by_option);
   auto progress = [&](const RunResult& r) { meter.update(r, s.solver.steps(), s.model.particle_count()); };
   auto finish = [&](const RunResult& r) {
     g_report->ran = true;
     g_report->converged = r.converged;
+    g_report->verdict = verdict_name(r.verdict);
     g_report->last_run = meter.finish(r);
+    s.last_verdict = verdict_name(r.verdict);
     push_run_result(L, r);
     return 1;
   };
   const auto& after_step = s.options->after_step;
-  if (s.triggers.empty() && !after_step) return finish(s.solver.run(tolerance, cap, progress, 100));
+  if (s.triggers.empty() && !after_step) return finish(s.solver.run(limits, progress, 100));
   // With triggers, rules run between steps; a rule that changes the model at
   // equilibrium keeps the run going.
-  RunResult r;
+  RunMonitor monitor(s.model, s.solver, limits);
   std::uint64_t at_rest_since = 0;  // the step the model came to rest at (0: moving)
-  while (r.steps < cap) {
+  bool converged = false;
+  while (monitor.result().steps < cap) {
     s.solver.step();
-    ++r.steps;
-    r.residual = s.solver.residual();
-    const bool converged = r.residual < tolerance && s.solver.motion() < tolerance;
-    bool changed = !s.triggers.empty() && fire_triggers(L, s, converged);
+    const bool at_rest = monitor.observe();
+    bool changed = !s.triggers.empty() && fire_triggers(L, s, at_rest);
     if (after_step) changed |= after_step(L);
-    if (!converged || changed) at_rest_since = 0;
+    if (!at_rest || changed) at_rest_since = 0;
     else if (at_rest_since == 0) at_rest_since = s.solver.steps();
-    if (converged && !changed && every_triggers_had_their_turn(s, at_rest_since)) {
-      r.converged = true;
+    if (at_rest && !changed && every_triggers_had_their_turn(s, at_rest_since)) {
+      converged = true;
       break;
     }
-    if (r.steps % 100 == 0) progress(r);
+    if (monitor.failed()) break;
+    if (monitor.result().steps % 100 == 0) progress(monitor.result());
   }
-  return finish(r);
+  return finish(monitor.finish(converged));
 }
 
 int l_step(lua_State* L) {

@@ -112,6 +112,10 @@ int l_summary(lua_State* L) {
   set("min_bending_radius", min_radius);
   set("max_strain", max_strain);
   set("steps", double(m.steps));
+  // How the last m:run{} ended (run_verdict.hpp), "none" before any: a
+  // sweep's table tells a converged shape from one that is not.
+  lua_pushstring(L, s.last_verdict);
+  lua_setfield(L, -2, "verdict");
   // With a section: the most stressed beam, where, and its utilisation.
   if (has_section) {
     double worst = 0, utilisation = 0;

@@ -34,6 +34,9 @@ struct Scene {
   std::pair<std::uint64_t, std::size_t> neighbours_built_at{~0ull, 0};
   std::vector<Trigger*> triggers;  // owned by lua_rules.cpp, freed with the scene
   const SceneOptions* options = nullptr;
+  // The verdict of the model's last m:run{} (physics/run_verdict.hpp), or
+  // "none": m:summary reports it, so tendril.report's summary.csv does.
+  const char* last_verdict = "none";
   ~Scene();
 };
 

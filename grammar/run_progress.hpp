@@ -26,11 +26,16 @@ class RunProgress {
   // cap: the run's step limit; capped_by_option: it comes from --steps.
   RunProgress(bool enabled, double tolerance, std::uint64_t cap, bool capped_by_option,
               ProgressStyle style = ProgressStyle());
+  // A run with a relative tolerance too (RunLimits::relative).
+  RunProgress(bool enabled, const RunLimits& limits, std::uint64_t cap, bool capped_by_option,
+              ProgressStyle style = ProgressStyle());
   // Cheap enough to call every step; draws at most every style.every.
   // total_steps: the solver's count since the model began.
   void update(const RunResult& r, std::uint64_t total_steps, std::size_t particles);
   // How the run ended, in words ("converged in 812 steps: residual ... <
-  // tolerance ..."); printed as the final line when progress was shown.
+  // tolerance ...", "not converged: stalled at max_steps ..."): its verdict
+  // and the numbers behind it. Printed as the final line when progress was
+  // shown, and whenever the run did not converge (unless disabled).
   std::string finish(const RunResult& r);
 
  private:
@@ -38,6 +43,7 @@ class RunProgress {
   ProgressStyle style_;
   StatusLine line_;
   double tolerance_;
+  double relative_ = 0;
   std::uint64_t cap_;
   bool capped_by_option_;
   std::chrono::steady_clock::time_point start_, last_;

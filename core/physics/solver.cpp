@@ -290,18 +290,19 @@ void Solver::record_reset() {
 
 RunResult Solver::run(double tolerance, std::uint64_t max_steps,
                       const std::function<void(const RunResult&)>& progress, std::uint64_t progress_every) {
-  RunResult r;
-  while (r.steps < max_steps) {
+  return run(RunLimits{tolerance, 0, max_steps}, progress, progress_every);
+}
+
+RunResult Solver::run(const RunLimits& limits, const std::function<void(const RunResult&)>& progress,
+                      std::uint64_t progress_every) {
+  RunMonitor monitor(model_, *this, limits);
+  while (monitor.result().steps < limits.max_steps) {
     step();
-    ++r.steps;
-    r.residual = residual_;
-    if (residual_ < tolerance && motion_ < tolerance) {
-      r.converged = true;
-      break;
-    }
-    if (progress && r.steps % progress_every == 0) progress(r);
+    if (monitor.observe()) return monitor.finish(true);
+    if (monitor.failed()) break;
+    if (progress && monitor.result().steps % progress_every == 0) progress(monitor.result());
   }
-  return r;
+  return monitor.finish(false);
 }
 
 Vec3 Solver::reaction(ParticleId p) const {

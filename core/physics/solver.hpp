@@ -24,6 +24,7 @@
 
 #include "model/model.hpp"
 #include "physics/bar_chunks.hpp"
+#include "physics/run_verdict.hpp"
 #include "physics/workers.hpp"
 
 namespace tendril {
@@ -109,12 +110,6 @@ struct SolverSettings {
   int threads = 1;
 };
 
-struct RunResult {
-  std::uint64_t steps = 0;  // steps taken by this run
-  double residual = 0;      // largest unconstrained force [N] or torque [N m]
-  bool converged = false;
-};
-
 // Thrown when a force or position stops being finite, at the step's start or
 // at any stage of it. The step that found it moved no particle.
 struct NumericalError : ModelError {
@@ -135,6 +130,10 @@ class Solver {
   // `progress` (if set) is called every `progress_every` steps.
   RunResult run(double tolerance, std::uint64_t max_steps,
                 const std::function<void(const RunResult&)>& progress = {}, std::uint64_t progress_every = 1000);
+  // The same with a relative tolerance too; ends early when the run
+  // diverges or finds a mechanism (run_verdict.hpp says how it is judged).
+  RunResult run(const RunLimits& limits, const std::function<void(const RunResult&)>& progress = {},
+                std::uint64_t progress_every = 1000);
 
   // Residual forces, torques and direct stiffnesses at the current positions
   // and frames.

@@ -100,7 +100,38 @@ TEST_CASE("progress: a cap from --steps, a run still moving below the tolerance,
   RunProgress blown(true, 1e-3, 50, false, immediate(f, false));
   CHECK(blown.finish(result(12, std::nan(""), false)).rfind("not converged: the residual is nan after 12 steps", 0) ==
         0);
-  CHECK(contents(f).empty());  // no progress was shown: short runs end silently
+  // No progress was shown, but a run that did not converge says so anyway.
+  const std::string s = contents(f);
+  CHECK(count(s, "\n") == 3);
+  CHECK(count(s, "[tendril] not converged: ") == 3);
+}
+
+TEST_CASE("progress: the final line names the verdict and its numbers") {
+  std::FILE* f = std::tmpfile();
+  RunResult stalled = result(20000, 0.5, false);
+  stalled.verdict = Verdict::Stalled;
+  stalled.best_before = 0.2, stalled.best_after = 0.21, stalled.kinetic_resets = 4000;
+  stalled.force_scale = 1e8, stalled.relative_residual = 5e-9;
+  RunProgress a(true, 1e-3, 20000, false, immediate(f, false));
+  const std::string why = a.finish(stalled);
+  CHECK(why.rfind("not converged: stalled: max_steps 20000 reached", 0) == 0);
+  CHECK(why.find("its lowest in the second half of the run, 2.10e-01 N, is not below 0.9 times its lowest in the "
+                 "first half, 2.00e-01 N (4000 kinetic-damping resets in the run)") != std::string::npos);
+  CHECK(why.find("; relative residual 5.00e-09 of the force scale 1e+08 N") != std::string::npos);
+  RunResult diverged = result(3, 1e9, false);
+  diverged.verdict = Verdict::Diverged;
+  diverged.detail = "the residual grew to 1e+09 N";
+  RunProgress b(true, 1e-3, 20000, false, immediate(f, false));
+  CHECK(b.finish(diverged).rfind("not converged: diverged at step 3 (", 0) == 0);
+  RunLimits relative;
+  relative.tolerance = 0, relative.relative = 1e-9;
+  RunResult done = result(700, 0.05, true);
+  done.verdict = Verdict::Converged, done.threshold = 0.1, done.force_scale = 1e8, done.relative_residual = 5e-10;
+  RunProgress c(true, relative, 20000, false, immediate(f, false));
+  const std::string ok = c.finish(done);
+  CHECK(ok.find("residual 5.00e-02 N < tolerance 1.0e-01 (5.00e-10 of the force scale 1e+08 N)") != std::string::npos);
+  const std::string s = contents(f);
+  CHECK(count(s, "[tendril] not converged: ") == 2);  // the converged run is silent
 }
 
 TEST_CASE("progress: --quiet shows nothing, a short run shows nothing") {
@@ -112,6 +143,6 @@ TEST_CASE("progress: --quiet shows nothing, a short run shows nothing") {
   style.first_line = std::chrono::milliseconds(60000);
   RunProgress brief(true, 1e-3, 10, false, style);
   brief.update(result(5, 1, false), 5, 1);
-  brief.finish(result(10, 1, false));
+  brief.finish(result(10, 1, true));
   CHECK(contents(f).empty());
 }
