@@ -504,6 +504,7 @@ int l_run(lua_State* L) {
     const bool at_rest = monitor.observe();
     bool changed = !s.triggers.empty() && fire_triggers(L, s, at_rest);
     if (after_step) changed |= after_step(L);
+    if (changed) monitor.model_changed();
     if (!at_rest || changed) at_rest_since = 0;
     else if (at_rest_since == 0) at_rest_since = s.solver.steps();
     if (at_rest && !changed && every_triggers_had_their_turn(s, at_rest_since)) {

@@ -63,8 +63,12 @@ void RunMonitor::baseline() {
   constexpr double inf = std::numeric_limits<double>::infinity();
   Vec3 lo = Vec3::Constant(inf), hi = Vec3::Constant(-inf);
   for (ParticleId p : P.integrated.raw()) lo = lo.cwiseMin(P.position[p]), hi = hi.cwiseMax(P.position[p]);
-  // 1 mm at least, as runaway.cpp: a model of one particle moves relative to that.
-  extent_ = lo.x() <= hi.x() ? std::max((hi - lo).maxCoeff(), 1e-3) : 1e-3;
+  // The model's size is also its longest element at rest (a cable whose
+  // ends start at one point), and 1 mm at least, as runaway.cpp.
+  double longest = 1e-3;
+  for (const Bar& b : m_.bars.items) longest = std::max(longest, b.rest_length);
+  for (const Beam6& b : m_.beam6s.items) longest = std::max(longest, b.rest_length);
+  extent_ = lo.x() <= hi.x() ? std::max((hi - lo).maxCoeff(), longest) : longest;
   revision_ = m_.revision;
 }
 
@@ -82,16 +86,23 @@ bool RunMonitor::observe() {
   else
     r_.best_after = r_.steps == limits_.max_steps / 2 + 1 ? r_.residual : std::min(r_.best_after, r_.residual);
 
-  // Diverged: measured from the first step's residual, raised by every
-  // topology change (a rule may load the model more) and by the force scale.
+  // Diverged: measured from the first step's residual, the force scale and
+  // the tolerance; raised to the residual of the first step that leaves rest
+  // (a model at rest, or with nothing on it yet, has no measure of its
+  // forces) and of every step after a change of the model (a topology
+  // change, or a rule or a front end that changed it: a grown or driven
+  // model pulls harder, which is no instability).
   if (!started_) {
     started_ = true;
     r_.reference = std::max({r_.residual, scale_, limits_.tolerance});
   }
-  if (m_.revision != revision_) {
+  if (m_.revision != revision_ || changed_ || (resting_ && !at_rest)) {
     r_.reference = std::max(r_.reference, r_.residual);
-    baseline();
+    if (m_.revision != revision_ || changed_) rebaseline_ = true;  // the travel too, at the next check
+    revision_ = m_.revision;
+    changed_ = false;
   }
+  resting_ = at_rest;
   if (!(r_.residual <= kDivergence * r_.reference)) {
     // A rule may have loaded the model more since; not the reactions,
     // which grow with the divergence itself.
@@ -111,6 +122,11 @@ bool RunMonitor::observe() {
 }
 
 void RunMonitor::check_mechanism() {
+  if (rebaseline_) {
+    baseline();
+    rebaseline_ = false;
+    return;
+  }
   if (r_.residual < kMechanismResidual * r_.reference) return;  // settling: the residual fell
   const Particles& P = m_.particles;
   ParticleId far = kNone;

@@ -14,12 +14,15 @@
 //              and so does a residual at the floor of rounding).
 //   diverged   the run was stopped because the residual grew kDivergence
 //              times above its reference (the larger of the run's first
-//              residual, the force scale and the tolerance): an unstable
-//              time step or a load the structure cannot carry. Positions are
-//              left finite where the run stopped.
+//              residual, the force scale and the tolerance, raised to the
+//              residual of the first step that leaves rest and of the step
+//              after any change of the model): an unstable time step or a
+//              load the structure cannot carry. Positions are left finite
+//              where the run stopped.
 //   mechanism  the run was stopped because a particle travelled more than
 //              kMechanismTravel times the model's extent since the run
-//              started (or since the last topology change) while the
+//              started (or since the model last changed; the extent is
+//              at least its longest element at rest) while the
 //              residual stayed at least kMechanismResidual of its reference:
 //              a load moving a part that nothing resists (no support along
 //              it, no stiffness), which no step count would bring to rest.
@@ -91,6 +94,9 @@ class RunMonitor {
   // After each step: true when the residual and the motion are below the
   // threshold (at rest; the caller decides whether that ends the run).
   bool observe();
+  // The caller changed the model between steps (a rule, a front end): the
+  // divergence reference and the travel start again from there.
+  void model_changed() { changed_ = true; }
   // Diverged or mechanism: the run must stop now.
   bool failed() const { return failed_; }
   const RunResult& result() const { return r_; }
@@ -110,6 +116,7 @@ class RunMonitor {
   double extent_ = 0;
   std::vector<Vec3> start_;
   bool failed_ = false, started_ = false;
+  bool changed_ = false, rebaseline_ = false, resting_ = false;
 };
 
 }  // namespace tendril
