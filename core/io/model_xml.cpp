@@ -432,7 +432,6 @@ std::string write_document(const Model& m, const SolverSettings& s) {
           w.attr("id", id);
           write_section(w, blk.section);
           write_membrane(w, blk.membrane);
-        write_pressure(w, blk);
           write_pressure(w, blk);
           for (const auto& q : list.quads) {
             w.open("quad");

@@ -25,6 +25,8 @@ TEST_CASE("model database: paved and Catmull-Clark patches round-trip bit for bi
   // A rest length that is not the current distance must survive too.
   for (Dart d : m.map.orbit(kEdgeOrbit, m.blocks[paved.patch].dart)) m.rest_length[d] *= 0.9;
   m.rebuild_elements();
+  // And a pressure on a quad list (it was written twice: a file tinyxml2 refused).
+  m.set_pressure(paved.patch, 250, Vec3(0, 0, 10));
   REQUIRE(m.check() == "");
   const std::string first = model_xml_string(m, s);
   CHECK(first.find("<quad a=") != std::string::npos);
@@ -34,6 +36,7 @@ TEST_CASE("model database: paved and Catmull-Clark patches round-trip bit for bi
   CHECK(loaded.check() == "");
   CHECK(loaded.block_count(BlockKind::Patch) == 2);
   CHECK(loaded.bars.size() == m.bars.size());
+  CHECK(loaded.blocks[paved.patch].pressure == 250);
   CHECK(model_xml_string(loaded, ls) == first);
 }
 
