@@ -193,6 +193,24 @@ void declare_members(std::vector<Command>& out) {
                  },
                  1, Returns::Number,
                  [](Target& t, const Args& a) { return number_result(t.model.blocks[block(a, 0)].pressure); }});
+  out.push_back({"area_load",
+                 "a load on a patch per area projected along a direction [N/m^2], acting along it: snow on the plan "
+                 "area by default",
+                 Effect::Setting,
+                 {{"patch", Type::Block, "a patch"},
+                  {"q", Type::Number, "the load per projected area [N/m^2]; 0 removes it"},
+                  {"direction", Type::Vector, "the direction it acts along and projects on (default {0, 0, -1}: snow)", {}, {}, true}},
+                 Returns::Nothing,
+                 [](Target& t, Args& a) {
+                   if (!a[2].given) {  // snow; the journal line always carries the direction
+                     a[2].vector = Vec3(0, 0, -1);
+                     a[2].given = true;
+                   }
+                   t.model.set_area_load(block(a, 0), a[1].number, a[2].vector);
+                   return nothing();
+                 },
+                 1, Returns::Number,
+                 [](Target& t, const Args& a) { return number_result(t.model.blocks[block(a, 0)].area_load); }});
   out.push_back({"joint", "a rotational joint where exactly two beams cross (thesis 6.5.2)", Effect::Setting,
                  {{"particle", Type::Particle, "the crossing"},
                   {"angle", Type::Number, "the target included angle [rad]"},

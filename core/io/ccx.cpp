@@ -272,6 +272,21 @@ std::string ccx_string(const Model& m) {
                (blk.membrane.cst() ? " Pa on its triangles (*DLOAD, a follower load in ccx too; each corner takes a third of a triangle where tendril gives a quarter of a quad)\n"
                                    : " Pa as the nodal forces of its current shape (a bar patch has no faces in ccx): they keep their direction where tendril's turn with the quads\n");
   }
+  // Area loads (Model::set_area_load): the nodal forces of the current
+  // shape, q |A . d| d / 4 a corner, dead loads in ccx as in tendril (their
+  // size follows the projected area in tendril only).
+  for (BlockId b : m.live_blocks()) {
+    const Block& blk = m.blocks[b];
+    if (blk.kind != BlockKind::Patch || blk.area_load == 0) continue;
+    for (const Model::Quad& q : m.area_load_quads(b)) {
+      if (P.passive[q[0]] || P.passive[q[1]] || P.passive[q[2]] || P.passive[q[3]]) continue;  // dormant
+      const Vec3 area = 0.5 * (P.position[q[2]] - P.position[q[0]]).cross(P.position[q[3]] - P.position[q[1]]);
+      const Vec3 f = 0.25 * blk.area_load * std::abs(area.dot(blk.area_load_direction)) * blk.area_load_direction;
+      for (ParticleId p : q) pressure_force[p] += f;
+    }
+    d.notes += "** patch " + std::to_string(b) + ": area load " + num(blk.area_load) +
+               " N/m^2 as the nodal forces of its current shape\n";
+  }
   const double t = kCcxMembraneThickness;
   for (std::size_t e = 0; e < m.csts.size(); ++e) {
     const Cst& c = m.csts[e];

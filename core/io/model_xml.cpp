@@ -270,6 +270,12 @@ void write_membrane(Writer& w, const Membrane& mem) {
 
 // A patch's pressure (attributes): nothing without one.
 void write_pressure(Writer& w, const Block& blk) {
+  if (blk.area_load != 0) {
+    w.attr("area_load", blk.area_load);
+    w.attr("area_x", blk.area_load_direction.x());
+    w.attr("area_y", blk.area_load_direction.y());
+    w.attr("area_z", blk.area_load_direction.z());
+  }
   if (blk.pressure == 0) return;
   w.attr("pressure", blk.pressure);
   if (blk.pressure_towards == Vec3::Zero()) return;
@@ -576,6 +582,8 @@ struct BlockRecord {
   Membrane membrane;
   double pressure = 0;  // patches: Model::set_pressure
   Vec3 towards = Vec3::Zero();
+  double area_load = 0;  // patches: Model::set_area_load
+  Vec3 area_direction = Vec3::Zero();
   std::vector<std::array<unsigned, 3>> triangles;
   std::vector<CstReference> references;
   std::vector<const tinyxml2::XMLElement*> triangle_elements;
@@ -938,6 +946,9 @@ BlockRecord Reader::read_patch(const tinyxml2::XMLElement* e) const {
   b.membrane = a.membrane();
   b.pressure = a.real("pressure", 0.0);
   b.towards = Vec3(a.real("towards_x", 0.0), a.real("towards_y", 0.0), a.real("towards_z", 0.0));
+  b.area_load = a.real("area_load", 0.0);
+  b.area_direction = Vec3(a.real("area_x", 0.0), a.real("area_y", 0.0), a.real("area_z", 0.0));
+  if (b.area_load != 0 && !(b.area_direction.norm() > 0)) a.bad("area_load", "needs a non-zero area_x, area_y, area_z");
   if (!e->Attribute("rows") && !e->Attribute("cols")) return read_quad_patch(e, a, b);
   unsigned rows = a.index("rows"), cols = a.index("cols");
   if (rows < 2 || rows > 1u << 15) a.bad("rows", "must be an integer from 2 to 32768");
@@ -1318,6 +1329,7 @@ void build(const Reader& reader, const Document& d, Model& m) {
                                 r.membrane.mode == Membrane::Analysis ? &r.references : nullptr);
       }
       if (r.pressure != 0) m.set_pressure(b, r.pressure, r.towards);
+      if (r.area_load != 0) m.set_area_load(b, r.area_load, r.area_direction);
     } catch (const ModelError& e) {
       reader.fail(r.element, e.what());
     }

@@ -56,6 +56,10 @@ struct Block {
   // towards (zero: outward), pressure.cpp.
   double pressure = 0;
   Vec3 pressure_towards = Vec3::Zero();
+  // Patches: a load [N/m^2] on the area projected on the plane normal to
+  // its unit direction (snow: {0, 0, -1}), pressure.cpp.
+  double area_load = 0;
+  Vec3 area_load_direction = Vec3::Zero();
   Dart dart = kNoDart;  // any dart of the component
   std::size_t darts = 0;
   bool alive = false;
@@ -272,6 +276,14 @@ class Model {
   // The patch's quads, oriented as the pressure acts (corners in order, the
   // normal of (c - a) x (d - b)); empty when the patch has no pressure.
   std::vector<Quad> pressure_quads(BlockId b) const;
+  // A load q [N/m^2] on patch b per area projected along `direction` (any
+  // non-zero vector, kept as a unit vector), acting along it: snow on the
+  // plan area is q with {0, 0, -1}. A dead load in direction, its size
+  // following the projected area as the patch moves: a quad's corners take
+  // q |A . d| / 4 each (A its area vector). 0 removes it.
+  void set_area_load(BlockId b, double q, const Vec3& direction);
+  // The quads of a patch under an area load (empty without one).
+  std::vector<Quad> area_load_quads(BlockId b) const;
   // The CST triangles of a patch (empty in bars mode) and their references,
   // in dart order.
   std::vector<Triangle> patch_triangles(BlockId b, std::vector<CstReference>* reference = nullptr) const;

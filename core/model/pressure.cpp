@@ -10,6 +10,7 @@
 // neighbour's dart alpha2 alpha0 x walks the shared edge the other way.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 
 #include "model/model.hpp"
@@ -80,6 +81,29 @@ void Model::set_pressure(BlockId b, double p, const Vec3& towards) {
   blocks[b].pressure = p;
   blocks[b].pressure_towards = towards;
   ++revision;
+}
+
+void Model::set_area_load(BlockId b, double q, const Vec3& direction) {
+  require_block(b, "area_load");
+  if (blocks[b].kind != BlockKind::Patch) throw ModelError("area_load: block " + bid(b) + " is not a patch");
+  if (!std::isfinite(q)) throw ModelError("area_load: the load must be a finite number [N/m^2]");
+  if (!direction.allFinite() || !(direction.norm() > 0))
+    throw ModelError("area_load: the direction must be a finite, non-zero vector");
+  std::vector<Quad> faces;
+  if (q != 0 && !oriented_faces(*this, b, faces))
+    throw ModelError("area_load: patch " + bid(b) + " is not orientable (a Moebius strip)");
+  blocks[b].area_load = q;
+  // A unit vector is kept as given (normalising it again could move its last
+  // bit, and a saved model would not load back to the same bytes).
+  const bool unit = std::abs(direction.norm() - 1) <= 4 * std::numeric_limits<double>::epsilon();
+  blocks[b].area_load_direction = q == 0 ? Vec3::Zero() : unit ? direction : Vec3(direction.normalized());
+  ++revision;
+}
+
+std::vector<Model::Quad> Model::area_load_quads(BlockId b) const {
+  std::vector<Quad> faces;
+  if (blocks[b].area_load == 0 || !oriented_faces(*this, b, faces)) return {};
+  return faces;
 }
 
 std::vector<Model::Quad> Model::pressure_quads(BlockId b) const {

@@ -5,6 +5,11 @@
 // takes p A / 4. The load turns with the face; its derivative by a corner
 // is bounded by p times half a diagonal over four, which goes into S so
 // that the fictitious masses (eq. 3.4) stay stable under a large pressure.
+// An area load q along d (Model::set_area_load, snow) is the same walk with
+// a dead direction: each corner takes q |A . d| d / 4, its derivative
+// bounded alike.
+#include <cmath>
+
 #include "physics/solver.hpp"
 
 namespace tendril {
@@ -16,6 +21,12 @@ bool Solver::pressure_acts() const {
       const Block& blk = model_.blocks[b];
       if (!blk.alive || blk.kind != BlockKind::Patch || blk.pressure == 0) continue;
       for (const Model::Quad& q : model_.pressure_quads(b)) pressure_quads_.push_back({q, blk.pressure});
+    }
+    for (BlockId b = 0; b < model_.blocks.size(); ++b) {
+      const Block& blk = model_.blocks[b];
+      if (!blk.alive || blk.kind != BlockKind::Patch || blk.area_load == 0) continue;
+      for (const Model::Quad& q : model_.area_load_quads(b))
+        pressure_quads_.push_back({q, blk.area_load, blk.area_load_direction});
     }
     pressure_revision_ = model_.revision;
   }
@@ -29,7 +40,8 @@ void Solver::accumulate_pressure_forces(const Vec3* x, Vec3* F, double* S) const
     const auto& [a, b, c, d] = f.q;
     if (!(active[a] & active[b] & active[c] & active[d])) continue;  // dormant, as its elements are
     const Vec3 ac = x[c] - x[a], bd = x[d] - x[b];
-    const Vec3 share = (0.125 * f.p) * ac.cross(bd);
+    const Vec3 area2 = ac.cross(bd);  // twice the area vector
+    const Vec3 share = f.along.isZero(0) ? Vec3((0.125 * f.p) * area2) : Vec3((0.125 * f.p * std::abs(area2.dot(f.along))) * f.along);
     for (ParticleId p : f.q) F[p] += share;
     if (!S) continue;
     const double k = 0.125 * std::abs(f.p) * (ac.norm() + bd.norm());

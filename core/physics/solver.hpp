@@ -282,7 +282,8 @@ class Solver {
   // derived again when the model's revision moves.
   struct PressureQuad {
     Model::Quad q;
-    double p;
+    double p;                          // [Pa] or, for an area load, [N/m^2]
+    Vec3 along = Vec3::Zero();         // an area load's unit direction; zero: a pressure
   };
   mutable std::vector<PressureQuad> pressure_quads_;
   mutable std::uint64_t pressure_revision_ = ~std::uint64_t(0);

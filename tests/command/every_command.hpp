@@ -144,6 +144,8 @@ inline void apply_every_command(Recorded& r, const std::filesystem::path& base) 
   r.run("load", {id(grid[4]), vec(0, 0, -1)});
   r.run("pressure", {id(patch_a), num(2), vec(0, 0, 1)});
   r.run("pressure", {id(patch_a), num(-1), none()});
+  r.run("area_load", {id(patch_a), num(0.5), none()});
+  r.run("area_load", {id(patch_a), num(0.25), vec(1, 0, -1)});
   r.run("mass", {id(grid[4]), num(0.25)});
   r.run("position", {id(grid[7]), vec(1, 2, 5.1)});
   const std::size_t g = r.run("goal", {word("plane"), id(b1), none(), none(), vec(0, 0, 0), vec(0, 0, 1), num(10)}).index;
