@@ -19,14 +19,12 @@ bool Solver::pressure_acts() const {
     pressure_quads_.clear();
     for (BlockId b = 0; b < model_.blocks.size(); ++b) {
       const Block& blk = model_.blocks[b];
-      if (!blk.alive || blk.kind != BlockKind::Patch || blk.pressure == 0) continue;
-      for (const Model::Quad& q : model_.pressure_quads(b)) pressure_quads_.push_back({q, blk.pressure});
-    }
-    for (BlockId b = 0; b < model_.blocks.size(); ++b) {
-      const Block& blk = model_.blocks[b];
-      if (!blk.alive || blk.kind != BlockKind::Patch || blk.area_load == 0) continue;
-      for (const Model::Quad& q : model_.area_load_quads(b))
-        pressure_quads_.push_back({q, blk.area_load, blk.area_load_direction});
+      if (!blk.alive || blk.kind != BlockKind::Patch) continue;
+      if (blk.pressure != 0)
+        for (const Model::Quad& q : model_.pressure_quads(b)) pressure_quads_.push_back({q, blk.pressure});
+      if (blk.area_load != 0)
+        for (const Model::Quad& q : model_.area_load_quads(b))
+          pressure_quads_.push_back({q, blk.area_load, blk.area_load_direction});
     }
     pressure_revision_ = model_.revision;
   }

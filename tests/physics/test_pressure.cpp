@@ -21,6 +21,14 @@ Vec3 area_vector(const Model& m, const Model::Quad& q) {
   return 0.5 * (x[q[2]] - x[q[0]]).cross(x[q[3]] - x[q[1]]);
 }
 
+// The sum of the supports' reactions on the square.
+Vec3 total_reaction(const FlatSquare& sq, const Solver& solver) {
+  Vec3 sum = Vec3::Zero();
+  for (ParticleId p : sq.ps)
+    if (sq.m.particles.lock[p]) sum += solver.reaction(p);
+  return sum;
+}
+
 }  // namespace
 
 TEST_CASE("pressure: the quads are oriented towards the given side, or outward") {
@@ -55,9 +63,7 @@ TEST_CASE("pressure: the supports of a flat square carry p times its area, with 
     solver.settings.integrator = integrator;
     const RunResult r = solver.run(1e-7, 500000);
     REQUIRE(r.converged);
-    Vec3 reactions = Vec3::Zero();
-    for (ParticleId p : sq.ps)
-      if (sq.m.particles.lock[p]) reactions += solver.reaction(p);
+    const Vec3 reactions = total_reaction(sq, solver);
     INFO(integrator_name(integrator));
     CHECK(reactions.z() == doctest::Approx(-50 * 4.0).epsilon(1e-6));
     CHECK(std::abs(reactions.x()) < 1e-6);
@@ -98,9 +104,7 @@ TEST_CASE("area load: a square tilted by 30 degrees carries q A cos(theta) of sn
     solver.settings.integrator = integrator;
     const RunResult r = solver.run(1e-7, 500000);
     REQUIRE(r.converged);
-    Vec3 reactions = Vec3::Zero();
-    for (ParticleId p : sq.ps)
-      if (sq.m.particles.lock[p]) reactions += solver.reaction(p);
+    const Vec3 reactions = total_reaction(sq, solver);
     INFO(integrator_name(integrator));
     CHECK(reactions.z() == doctest::Approx(q * 4.0 * std::cos(theta)).epsilon(1e-6));
     CHECK(std::abs(reactions.x()) < 1e-6);
