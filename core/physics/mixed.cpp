@@ -34,10 +34,7 @@ void Solver::integrate_mixed() {
   } else {
     integrate_leapfrog();
   }
-  ++steps_;
-  time_ += dt;
-  ++model_.steps;
-  model_.time += dt;
+  count_step(dt);
 }
 
 }  // namespace tendril

@@ -108,10 +108,7 @@ void Solver::step() {
   if (fused_kick_drift_applies()) {
     mixed_implicit_ = false, mixed_peak_ = 0;
     fused_kick_drift(settings.integrator == Integrator::SymplecticEuler || half_step_);
-    ++steps_;
-    time_ += settings.dt;
-    ++model_.steps;
-    model_.time += settings.dt;
+    count_step(settings.dt);
     return;
   }
   compute_forces();
@@ -127,7 +124,10 @@ void Solver::step() {
     case Integrator::ProjectiveDynamics: integrate_projective(); break;
     case Integrator::Mixed: integrate_mixed(); return;  // counts its own step and time
   }
-  const double dt = implicit(settings.integrator) ? vie_dt() : settings.dt;
+  count_step(implicit(settings.integrator) ? vie_dt() : settings.dt);
+}
+
+void Solver::count_step(double dt) {
   ++steps_;
   time_ += dt;
   ++model_.steps;

@@ -255,6 +255,7 @@ class Solver {
   bool kinetic_peak_passed(double ke) const;
   void record_energy(double ke, double momentum2);
   void record_reset();
+  void count_step(double dt);  // this solver's step and time, and the model's (Model::steps, time)
 
   Model& model_;
   double residual_ = 0, torque_residual_ = 0, motion_ = 0;
