@@ -87,7 +87,15 @@ await run('interact', scene('scripts/examples/grow.lua'), ['--speed', '0'], asyn
   check(true, `the model has one particle more (${count0} -> ${count0 + 1})`);
 
   // --- a refused rule shows why ----------------------------------------------------------------
-  const q = await lonely(page, CHILD, [p.id]);
+  // The model moves on after the insertion: look again for up to 5 s for a
+  // child particle clear of the others (under a loaded machine the first
+  // frames after a topology change may have none).
+  let q = null;
+  for (let tries = 0; tries < 20 && q === null; ++tries) {
+    q = await lonely(page, CHILD, [p.id]);
+    if (q === null) await page.waitForTimeout(250);
+  }
+  check(q !== null, `another child particle to pick: ${JSON.stringify(q)}`);
   await page.mouse.click(q.x, q.y);
   await page.click('div[data-rule="delete_particle"] .rule-name');
   await page.click('div[data-rule="delete_particle"] .apply');
