@@ -86,6 +86,27 @@ void declare_members(std::vector<Command>& out) {
                   {"G", Type::Number, "analysis shear stiffness [N/m]", {}, {}, true},
                   {"triangles", Type::Particles, "CST triangles, three particles each, the first side along the warp", {}, {}, true}},
                  Returns::Nothing, apply_formulation, 0, Returns::Nothing, nullptr, false, formulation_on_line});
+  out.push_back({"patch_prestress",
+                 "warp and weft prestress of a patch's bars [N]: the first warp_edges pairs of `edges` are warp, the "
+                 "rest weft; an edge in both (a seam) takes the mean",
+                 Effect::Setting,
+                 {{"patch", Type::Block, "a patch"},
+                  {"warp", Type::Number, "prestress of a warp bar [N]", {0, kInf}},
+                  {"weft", Type::Number, "prestress of a weft bar [N]", {0, kInf}},
+                  {"warp_edges", Type::Count, "how many of the pairs are warp", {0, kInf}},
+                  {"edges", Type::Particles, "particle pairs: every edge of the patch, warp first"}},
+                 Returns::Nothing, [](Target& t, Args& a) {
+                   const std::vector<std::uint32_t>& ids = a[4].ids;
+                   if (ids.size() % 2) throw ArgumentError(4, "needs two particles per edge");
+                   const std::size_t warp = std::size_t(a[3].id);
+                   if (2 * warp > ids.size()) throw ArgumentError(3, "is more than the pairs given");
+                   std::vector<Model::EdgePair> warp_edges, weft_edges;
+                   for (std::size_t k = 0; k < ids.size(); k += 2)
+                     (k < 2 * warp ? warp_edges : weft_edges).push_back({ids[k], ids[k + 1]});
+                   t.model.set_patch_prestress(block(a, 0), a[1].number, a[2].number, warp_edges, weft_edges);
+                   return nothing();
+                 }});
+  out.back().lua = "";  // m:patch_prestress(patch, {warp, weft} [, {warp =, seams =}]) (grammar/lua_patch_formulation.cpp)
   out.push_back({"orientation", "sets a particle's node frame (a rotation quaternion; normalised)", Effect::Setting,
                  {{"particle", Type::Particle, "a particle"},
                   {"w", Type::Number, "quaternion w"},

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "folded_quads.hpp"
 #include "io/model_xml.hpp"
 #include "io/ccx.hpp"
 #include "io/obj.hpp"
@@ -32,6 +33,7 @@
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
 #include "lua_section_args.hpp"
+#include "lua_patch_prestress.hpp"
 #include "lua_strip.hpp"
 #include "model/model.hpp"
 #include "physics/settings_check.hpp"
@@ -433,6 +435,43 @@ int l_settings(lua_State* L) {
   return 1;
 }
 
+// "patch 7 has 3 folded quads (worst scaled Jacobian -0.34 at particles 12
+// 13 25 24): ...", or "" when none is.
+std::string folded_warning(const std::vector<meshing::FoldedQuad>& folded) {
+  if (folded.empty()) return "";
+  const meshing::FoldedQuad& w = folded.front();
+  std::size_t in_worst = 0;
+  for (const auto& f : folded) in_worst += f.patch == w.patch;
+  char jac[32];
+  std::snprintf(jac, sizeof jac, "%.2f", w.jacobian);
+  std::string text = "patch " + std::to_string(w.patch) + " has " + std::to_string(in_worst) + " folded quad" +
+                     (in_worst == 1 ? "" : "s") + " (worst scaled Jacobian " + jac + " at particles";
+  for (ParticleId p : w.corners) text += " " + std::to_string(p);
+  text += ")";
+  if (folded.size() > in_worst) text += ", other patches " + std::to_string(folded.size() - in_worst) + " more";
+  return text + ": inverted faces, not a membrane's shape (a load or a boundary the prestress cannot hold, or a time "
+                "step too large; docs/meshing.md)";
+}
+
+// {{patch =, particles = {...}, jacobian =}, ...}, worst first.
+void push_folded(lua_State* L, Scene& s, const std::vector<meshing::FoldedQuad>& folded) {
+  lua_createtable(L, int(folded.size()), 0);
+  for (std::size_t k = 0; k < folded.size(); ++k) {
+    lua_createtable(L, 0, 3);
+    push_block(L, s, folded[k].patch);
+    lua_setfield(L, -2, "patch");
+    lua_createtable(L, 4, 0);
+    for (int c = 0; c < 4; ++c) {
+      push_particle(L, s, folded[k].corners[c]);
+      lua_rawseti(L, -2, c + 1);
+    }
+    lua_setfield(L, -2, "particles");
+    lua_pushnumber(L, folded[k].jacobian);
+    lua_setfield(L, -2, "jacobian");
+    lua_rawseti(L, -2, lua_Integer(k + 1));
+  }
+}
+
 void push_run_result(lua_State* L, const RunResult& r) {
   lua_createtable(L, 0, 6);
   lua_pushinteger(L, lua_Integer(r.steps));
@@ -484,12 +523,17 @@ int l_run(lua_State* L) {
   RunProgress meter(s.options->progress, limits, cap, capped_by_option);
   auto progress = [&](const RunResult& r) { meter.update(r, s.solver.steps(), s.model.particle_count()); };
   auto finish = [&](const RunResult& r) {
+    // A membrane that folded is not a shape, converged or not: said with
+    // the worst quad, and listed in the result.
+    const std::vector<meshing::FoldedQuad> folded = meshing::folded_quads(s.model);
     g_report->ran = true;
     g_report->converged = r.converged;
     g_report->verdict = verdict_name(r.verdict);
-    g_report->last_run = meter.finish(r);
+    g_report->last_run = meter.finish(r, folded_warning(folded));
     s.last_verdict = verdict_name(r.verdict);
     push_run_result(L, r);
+    push_folded(L, s, folded);
+    lua_setfield(L, -2, "folded");
     return 1;
   };
   const auto& after_step = s.options->after_step;
@@ -702,6 +746,7 @@ void register_model_meta(lua_State* L) {
   add_multires_methods(L);
   add_clamp_methods(L);
   add_strip_methods(L);
+  add_patch_prestress_methods(L);
   add_import_methods(L);
   lua_setfield(L, -2, "__index");
   lua_pop(L, 1);

@@ -60,7 +60,7 @@ void RunProgress::update(const RunResult& r, std::uint64_t total_steps, std::siz
   line_.show(line);
 }
 
-std::string RunProgress::finish(const RunResult& r) {
+std::string RunProgress::finish(const RunResult& r, const std::string& warning) {
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const auto steps = static_cast<unsigned long long>(r.steps);
   const std::string took = duration_text(elapsed);
@@ -92,8 +92,9 @@ std::string RunProgress::finish(const RunResult& r) {
   if (r.force_scale > 0 && std::isfinite(r.residual))
     why += format(r.converged ? " (%.2e of the force scale %.3g N)" : "; relative residual %.2e of the force scale %.3g N",
                   r.relative_residual, r.force_scale);
+  if (!warning.empty()) why += "; " + warning;
   if (line_.shown()) line_.end("[tendril] " + why);
-  else if (enabled_ && !r.converged) std::fprintf(style_.out, "[tendril] %s\n", why.c_str());
+  else if (enabled_ && (!r.converged || !warning.empty())) std::fprintf(style_.out, "[tendril] %s\n", why.c_str());
   return why;
 }
 

@@ -36,7 +36,9 @@ class RunProgress {
   // tolerance ...", "not converged: stalled at max_steps ..."): its verdict
   // and the numbers behind it. Printed as the final line when progress was
   // shown, and whenever the run did not converge (unless disabled).
-  std::string finish(const RunResult& r);
+  // `warning`, when not empty, follows the verdict ("; " + warning) and
+  // makes the line show even for a run that converged.
+  std::string finish(const RunResult& r, const std::string& warning = "");
 
  private:
   bool enabled_;

@@ -34,7 +34,7 @@ std::vector<float> axial_force(const Model& m, const Topology& t) {
   for (std::size_t e = 0; e < out.size(); ++e) {
     const Section& s = section(m, t, e);
     const bool slack = t.edge_kind[e] == std::uint8_t(EdgeKind::Cable) && out[e] <= 0;
-    out[e] = slack ? 0.f : float(s.EA * out[e] + s.prestress);
+    out[e] = slack ? 0.f : float(s.EA * out[e] + t.prestress[e]);
   }
   return out;
 }

@@ -43,23 +43,30 @@ Topology topology_of(const Model& m) {
     t.states.push_back(std::uint8_t(m.state(p)));
     t.locks.push_back(P.lock[p]);
   }
-  // Patch edges' rest lengths are their bars' (a CST patch's inner edges
-  // have none: 0); beams and cables ask the model.
-  std::unordered_map<std::uint64_t, double> patch_rest;
+  // Patch edges' rest lengths and prestress are their bars' (a CST patch's
+  // inner edges have none: 0); beams and cables ask the model.
+  std::unordered_map<std::uint64_t, double> patch_rest, patch_prestress;
   auto key = [](ParticleId a, ParticleId b) { return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b); };
   for (std::size_t e = 0; e < m.bars.size(); ++e) {
     const Bar& bar = m.bars[e];
-    if (m.blocks[m.dart_block[bar.dart]].kind == BlockKind::Patch) patch_rest[key(bar.i, bar.j)] = bar.rest_length;
+    if (m.blocks[m.dart_block[bar.dart]].kind != BlockKind::Patch) continue;
+    patch_rest[key(bar.i, bar.j)] = bar.rest_length;
+    patch_prestress[key(bar.i, bar.j)] = bar.prestress;
   }
   auto edge = [&](ParticleId a, ParticleId b, EdgeKind kind, std::uint32_t block) {
     t.edges.push_back(t.index_of[a]);
     t.edges.push_back(t.index_of[b]);
     t.edge_kind.push_back(std::uint8_t(kind));
     t.edge_block.push_back(block);
-    double rest = 0;
-    if (kind != EdgeKind::PatchBar) rest = m.edge_rest_length(a, b);
-    else if (auto it = patch_rest.find(key(a, b)); it != patch_rest.end()) rest = it->second;
+    double rest = 0, prestress = m.blocks[t.blocks[block]].section.prestress;
+    if (kind != EdgeKind::PatchBar) {
+      rest = m.edge_rest_length(a, b);
+    } else if (auto it = patch_rest.find(key(a, b)); it != patch_rest.end()) {
+      rest = it->second;
+      prestress = patch_prestress.at(key(a, b));
+    }
     t.rest_length.push_back(float(rest));
+    t.prestress.push_back(float(prestress));
   };
   for (BlockId b : m.live_blocks()) {
     const Block& blk = m.blocks[b];
@@ -150,7 +157,7 @@ std::string encode_frame(const Model& m, const Solver& s, const Topology& t, con
 bool Topology::same_drawing(const Topology& o) const {
   return ids == o.ids && states == o.states && locks == o.locks && blocks == o.blocks && block_kind == o.block_kind &&
          block_form == o.block_form && edge_kind == o.edge_kind && edges == o.edges && edge_block == o.edge_block &&
-         rest_length == o.rest_length && triangles == o.triangles && triangle_block == o.triangle_block;
+         rest_length == o.rest_length && prestress == o.prestress && triangles == o.triangles && triangle_block == o.triangle_block;
 }
 
 }  // namespace tendril::studio

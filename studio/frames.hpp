@@ -45,6 +45,7 @@ struct Topology {
   std::vector<std::uint32_t> edges;  // pairs of indices into ids
   std::vector<std::uint32_t> edge_block;
   std::vector<float> rest_length;
+  std::vector<float> prestress;  // per edge [N] (not sent: the colour fields read it)
   std::vector<std::uint32_t> triangles;  // triples of indices into ids
   std::vector<std::uint32_t> triangle_block;
   std::vector<std::uint32_t> index_of;  // ParticleId -> index into ids (kNone if not drawn)

@@ -16,6 +16,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <set>
@@ -58,6 +59,7 @@ struct QuadGrid {
   int rows = 0, cols = 0;
   std::vector<ParticleId> nodes;
   std::vector<double> rest;
+  std::vector<double> prestress;  // per edge: its own (NaN: the section's)
 
   static std::vector<Edge> edges(int rows, int cols) {
     std::vector<Edge> out;
@@ -135,6 +137,7 @@ bool walk_quad_grid(const Model& m, BlockId b, Dart d00, QuadGrid& g) {
   if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
 
   g.rest.clear();
+  g.prestress.clear();
   for (const QuadGrid::Edge& e : g.edges()) {
     const std::size_t r = e.a / C, c = e.a % C;
     Dart d;
@@ -143,6 +146,7 @@ bool walk_quad_grid(const Model& m, BlockId b, Dart d00, QuadGrid& g) {
     else  // vertical: the left side of the quad right of it, or the right one of the last column
       d = c < qc ? a(1, start[r * qc + c]) : side1(start[r * qc + qc - 1]);
     g.rest.push_back(m.rest_length[d]);
+    g.prestress.push_back(m.edge_prestress[d]);
   }
   return true;
 }
@@ -162,8 +166,11 @@ bool find_quad_grid(const Model& m, BlockId b, QuadGrid& g) {
 // each quad from its smallest id towards its smaller neighbour, quads sorted;
 // edges as (smaller, larger) id, sorted, with their rest lengths.
 struct QuadList {
+  struct Edge {
+    double rest, prestress;  // prestress: the edge's own (NaN: the section's)
+  };
   std::vector<std::array<unsigned, 4>> quads;
-  std::vector<std::pair<std::pair<unsigned, unsigned>, double>> edges;
+  std::vector<std::pair<std::pair<unsigned, unsigned>, Edge>> edges;
 };
 
 QuadList quad_list(const Model& m, BlockId b, const std::vector<unsigned>& dense) {
@@ -171,10 +178,10 @@ QuadList quad_list(const Model& m, BlockId b, const std::vector<unsigned>& dense
   std::vector<Dart> darts = m.map.orbit(kComponentOrbit, m.blocks[b].dart);
   std::sort(darts.begin(), darts.end());
   std::set<Dart> done;
-  std::map<std::pair<unsigned, unsigned>, double> rest;
+  std::map<std::pair<unsigned, unsigned>, QuadList::Edge> rest;
   for (Dart d : darts) {
     const unsigned a = dense[m.dart_particle[d]], c = dense[m.dart_particle[m.map.alpha(0, d)]];
-    rest.emplace(edge_key(a, c), m.rest_length[d]);
+    rest.emplace(edge_key(a, c), QuadList::Edge{m.rest_length[d], m.edge_prestress[d]});
     if (done.count(d)) continue;
     for (Dart x : m.map.orbit(kFaceOrbit, d)) done.insert(x);
     std::array<unsigned, 4> q{};
@@ -444,11 +451,12 @@ std::string write_document(const Model& m, const SolverSettings& s) {
             for (int k = 0; k < 4; ++k) w.attr(kQuadNames[k], q[k]);
             w.close();
           }
-          for (const auto& [e, rest] : list.edges) {
+          for (const auto& [e, edge] : list.edges) {
             w.open("edge");
             w.attr("a", e.first);
             w.attr("b", e.second);
-            w.attr("rest", rest);
+            w.attr("rest", edge.rest);
+            if (!std::isnan(edge.prestress)) w.attr("prestress", edge.prestress);
             w.close();
           }
           write_triangles(w, m, b, dense);
@@ -472,6 +480,7 @@ std::string write_document(const Model& m, const SolverSettings& s) {
           w.attr("a", dense[g.nodes[e.a]]);
           w.attr("b", dense[g.nodes[e.b]]);
           w.attr("rest", g.rest[e.index]);
+          if (!std::isnan(g.prestress[e.index])) w.attr("prestress", g.prestress[e.index]);
           w.close();
         }
         write_triangles(w, m, b, dense);
@@ -563,6 +572,7 @@ struct EdgeRecord {
   unsigned a, b;  // file ids
   double rest;
   Quat end_a = Quat::Identity(), end_b = Quat::Identity();  // 6-DOF beams
+  double prestress = std::numeric_limits<double>::quiet_NaN();  // a patch edge's own prestress
 };
 
 struct BlockRecord {
@@ -1022,6 +1032,10 @@ void Reader::read_edge_or_triangle(const tinyxml2::XMLElement* c, Attributes& ca
   if (std::strcmp(c->Name(), "edge") == 0) {
     EdgeRecord r{ca.index("a"), ca.index("b"), ca.real("rest")};
     if (!(r.rest > 0)) ca.bad("rest", "must be > 0");
+    if (ca.raw("prestress")) {  // the edge's own (set_patch_prestress)
+      r.prestress = ca.real("prestress");
+      if (!(r.prestress >= 0)) ca.bad("prestress", "must be >= 0 [N]");
+    }
     b.edges.push_back(r);
     edge_elements.push_back(c);
   } else if (std::strcmp(c->Name(), "triangle") == 0) {
@@ -1311,14 +1325,16 @@ void build(const Reader& reader, const Document& d, Model& m) {
             m.clamp_darts.push_back(end);
           }
       } else {
-        std::map<std::pair<ParticleId, ParticleId>, double> rest;
+        std::map<std::pair<ParticleId, ParticleId>, const EdgeRecord*> edge;
         for (const EdgeRecord& e : r.edges) {
           ParticleId a = id_of.at(e.a), c = id_of.at(e.b);
-          rest[{std::min(a, c), std::max(a, c)}] = e.rest;
+          edge[{std::min(a, c), std::max(a, c)}] = &e;
         }
         for (Dart x : m.map.orbit(kComponentOrbit, m.blocks[b].dart)) {
           ParticleId a = m.dart_particle[x], c = m.dart_particle[m.map.alpha(0, x)];
-          m.rest_length[x] = rest.at({std::min(a, c), std::max(a, c)});
+          const EdgeRecord& e = *edge.at({std::min(a, c), std::max(a, c)});
+          m.rest_length[x] = e.rest;
+          m.edge_prestress[x] = e.prestress;
         }
       }
       block_of[r.id] = b;

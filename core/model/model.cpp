@@ -17,6 +17,7 @@ Model::Model()
       ring_next(map.add_column<Dart>(kNoDart)),
       ring_prev(map.add_column<Dart>(kNoDart)),
       rest_length(map.add_column<double>(0.0)),
+      edge_prestress(map.add_column<double>(std::numeric_limits<double>::quiet_NaN())),
       dart_beam6(map.add_column<ElementIndex>(kNone)),
       beam_end(map.add_column<Quat>(Quat::Identity())),
       cst_first(map.add_column<std::uint8_t>(0)),
@@ -196,7 +197,7 @@ void Model::add_bar(Dart d) {
   Bar bar{};
   bar.rest_length = rest_length[d];
   bar.EA = blk.section.EA;
-  bar.prestress = blk.section.prestress;
+  bar.prestress = bar_prestress(d);
   bar.line_mass = blk.section.line_mass;
   bar.tension_only = blk.kind == BlockKind::Cable;
   bar.dart = d;

@@ -284,6 +284,19 @@ class Model {
   void set_area_load(BlockId b, double q, const Vec3& direction);
   // The quads of a patch under an area load (empty without one).
   std::vector<Quad> area_load_quads(BlockId b) const;
+  // Warp and weft prestress of a patch's bars [N] (issue 11; the bar
+  // counterpart of a CST patch's warp and weft stresses): every edge listed
+  // in warp_edges takes `warp`, in weft_edges `weft`, one in both (a seam
+  // of the edge classification, where the yarns turn) their mean. Every
+  // edge of the patch must be listed; checked before anything changes.
+  // The values live on the edges (edge_prestress), so bars a switch to CST
+  // removes come back with them. edge_prestress.cpp.
+  using EdgePair = std::array<ParticleId, 2>;
+  void set_patch_prestress(BlockId b, double warp, double weft, const std::vector<EdgePair>& warp_edges,
+                           const std::vector<EdgePair>& weft_edges);
+  // The prestress a bar on edge d carries: the edge's own when it has one,
+  // else its block's section prestress.
+  double bar_prestress(Dart d) const;
   // The CST triangles of a patch (empty in bars mode) and their references,
   // in dart order.
   std::vector<Triangle> patch_triangles(BlockId b, std::vector<CstReference>* reference = nullptr) const;
@@ -397,6 +410,9 @@ class Model {
   DartColumn<Dart>& ring_next;
   DartColumn<Dart>& ring_prev;
   DartColumn<double>& rest_length;  // per edge: the bar's rest length [m]
+  // Per edge: a patch bar's own prestress [N] (set_patch_prestress); NaN:
+  // the block's section prestress.
+  DartColumn<double>& edge_prestress;
   DartColumn<ElementIndex>& dart_beam6;
   // Per dart of a 6-DOF beam edge: the beam end at the dart's particle,
   // relative to that particle's frame, its x axis looking along the edge away

@@ -45,7 +45,7 @@ std::string Model::check_dart(Dart d) const {
     if (bar.i != bi || bar.j != bj) return "bar " + std::to_string(e) + " has stale particles";
     if ((e < bars.awake) != (!particles.passive[bi] && !particles.passive[bj]))
       return "bar " + std::to_string(e) + " is on the wrong side of the awake/dormant partition";
-    if (!near(bar.rest_length, rest_length[d]) || bar.EA != blk.section.EA || bar.prestress != blk.section.prestress ||
+    if (!near(bar.rest_length, rest_length[d]) || bar.EA != blk.section.EA || bar.prestress != bar_prestress(d) ||
         bar.line_mass != blk.section.line_mass || bar.tension_only != (blk.kind == BlockKind::Cable))
       return "bar " + std::to_string(e) + " parameters differ from its block and edge";
   }

@@ -192,8 +192,10 @@ void Solver::prepare_masses() {
     } else {
       M = mass_scale * P.stiffness[p];
       if (!(M > 0))
-        throw NumericalError("solver: particle " + std::to_string(p) +
-                             " has no stiffness (an element with zero EA, or every neighbour passive?) at step " + std::to_string(steps_));
+        throw NumericalError("solver: " + describe_particle(model_, ParticleId(p)) +
+                             " has no stiffness: nothing holds it along its free axes, a mechanism (every element at "
+                             "it with zero EA, or every neighbour passive) at step " + std::to_string(steps_) +
+                             "; no particle was moved");
     }
     mass_[p] = M;
     residual2 = std::max(residual2, P.force[p].cwiseProduct(free).squaredNorm());

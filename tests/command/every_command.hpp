@@ -127,6 +127,15 @@ inline void apply_every_command(Recorded& r, const std::filesystem::path& base) 
   const std::uint32_t patch_b = r.run("patch", join(section(1e3, 0), {ids({grid[2], e0, e1, grid[5]})})).ids[0];
   r.run("merge_patches", {id(patch_a), id(patch_b)});
   r.run("remove_from_patch", {id(e0)});
+  // Warp and weft prestress on its bars, the edges from classification.
+  std::vector<std::uint32_t> warp_weft, weft_sides;
+  for (const auto& t : meshing::cst_triangulation(r.model, patch_a).triangles) {
+    warp_weft.insert(warp_weft.end(), {t[0], t[1]});
+    weft_sides.insert(weft_sides.end(), {t[1], t[2]});
+  }
+  const std::size_t warp_pairs = warp_weft.size() / 2;
+  warp_weft.insert(warp_weft.end(), weft_sides.begin(), weft_sides.end());
+  r.run("patch_prestress", {id(patch_a), num(3), num(1.5), id(warp_pairs), ids(warp_weft)});
   Args form(10, none());
   form[0] = id(patch_a);
   form[1] = word("form");
