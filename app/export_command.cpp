@@ -55,7 +55,7 @@ Command export_command() {
           [](CLI::App& cli) {
             auto o = std::make_shared<Outputs>();
             cli.add_option("--ccx", o->ccx, "the CalculiX deck to write (ccx -i NAME reads NAME.inp)")->type_name("FILE");
-            cli.add_option("--vtk", o->vtk, "a VTK file (.vtu: VTK XML, else legacy) with per-element results and reactions")
+            cli.add_option("--vtk", o->vtk, "a VTK file (.vtu: VTK XML, .vtp: VTK XML poly data, else legacy) with per-element results and reactions")
                 ->type_name("FILE");
             cli.add_option("--obj", o->obj, "a Wavefront OBJ, one group per block")->type_name("FILE");
             cli.add_option("--ply", o->ply, "a PLY of the particles, line elements and patch faces")->type_name("FILE");

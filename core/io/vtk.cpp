@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/atomic_file.hpp"
@@ -161,41 +162,96 @@ std::string vtk_string(const Model& m, const BeamSections* sections) {
   return out;
 }
 
-std::string vtu_string(const Model& m, const BeamSections* sections) {
-  const Grid g = grid_of(m, sections);
+namespace {
+
+void put_xml_array(std::string& out, const Array& a) {
+  out += std::string("<DataArray type=\"") + (a.integer ? "Int32" : "Float64") + "\" Name=\"" + a.name +
+         "\" NumberOfComponents=\"" + std::to_string(a.components) + "\" format=\"ascii\">\n";
+  put_values(out, a, ' ');
+  out += "\n</DataArray>\n";
+}
+
+// Connectivity and offsets of the given cells, in that order.
+std::pair<Array, Array> connectivity_of(const Grid& g, const std::vector<std::size_t>& cells) {
+  Array connectivity{"connectivity", 1, true, {}}, offsets{"offsets", 1, true, {}};
+  for (std::size_t k : cells) {
+    for (std::uint32_t i : g.cells[k]) connectivity.values.push_back(i);
+    offsets.values.push_back(double(connectivity.values.size()));
+  }
+  return {std::move(connectivity), std::move(offsets)};
+}
+
+// A VTK XML file of one piece: `kind` UnstructuredGrid or PolyData, its
+// cells' counts in `counts` (NumberOfCells=..., or NumberOfLines=...
+// NumberOfPolys=...), the cell data in `order`, then the cells' own
+// sections (`cells`, written by the caller).
+std::string xml_file(const Grid& g, const char* kind, const std::string& counts, const std::vector<std::size_t>& order,
+                     const std::string& cells) {
   std::string out = "<?xml version=\"1.0\"?>\n<!-- tendril results, SI units: m, N, N m, Pa (membrane stresses N/m) -->\n";
-  out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n";
-  out += "<Piece NumberOfPoints=\"" + std::to_string(g.points.size()) + "\" NumberOfCells=\"" +
-         std::to_string(g.cells.size()) + "\">\n";
-  auto array = [&](const Array& a) {
-    out += std::string("<DataArray type=\"") + (a.integer ? "Int32" : "Float64") + "\" Name=\"" + a.name +
-           "\" NumberOfComponents=\"" + std::to_string(a.components) + "\" format=\"ascii\">\n";
-    put_values(out, a, ' ');
-    out += "\n</DataArray>\n";
-  };
+  out += std::string("<VTKFile type=\"") + kind + "\" version=\"1.0\" byte_order=\"LittleEndian\">\n<" + kind + ">\n";
+  out += "<Piece NumberOfPoints=\"" + std::to_string(g.points.size()) + "\" " + counts + ">\n";
   out += "<PointData>\n";
-  for (const Array& a : g.point_data) array(a);
+  for (const Array& a : g.point_data) put_xml_array(out, a);
   out += "</PointData>\n<CellData>\n";
-  for (const Array& a : g.cell_data) array(a);
+  for (const Array& a : g.cell_data) {
+    Array ordered{a.name, a.components, a.integer, {}};
+    for (std::size_t k : order)
+      for (int c = 0; c < a.components; ++c) ordered.values.push_back(a.values[k * std::size_t(a.components) + c]);
+    put_xml_array(out, ordered);
+  }
   out += "</CellData>\n<Points>\n";
   Array points{"Points", 3, false, {}};
   for (const Vec3& x : g.points) points.values.insert(points.values.end(), {x.x(), x.y(), x.z()});
-  array(points);
-  out += "</Points>\n<Cells>\n";
-  Array connectivity{"connectivity", 1, true, {}}, offsets{"offsets", 1, true, {}}, types{"types", 1, true, {}};
-  for (std::size_t k = 0; k < g.cells.size(); ++k) {
-    for (std::uint32_t i : g.cells[k]) connectivity.values.push_back(i);
-    offsets.values.push_back(double(connectivity.values.size()));
-    types.values.push_back(g.types[k]);
-  }
-  for (const Array* a : {&connectivity, &offsets, &types}) array(*a);
-  out += "</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  put_xml_array(out, points);
+  out += "</Points>\n" + cells + "</Piece>\n</" + kind + ">\n</VTKFile>\n";
   return out;
 }
 
+bool ends_with(const std::string& s, const char* tail) {
+  const std::string t = tail;
+  return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
+}
+
+}  // namespace
+
+std::string vtu_string(const Model& m, const BeamSections* sections) {
+  const Grid g = grid_of(m, sections);
+  std::vector<std::size_t> order(g.cells.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  auto [connectivity, offsets] = connectivity_of(g, order);
+  Array types{"types", 1, true, {}};
+  for (int t : g.types) types.values.push_back(t);
+  std::string cells = "<Cells>\n";
+  for (const Array* a : {&connectivity, &offsets, &types}) put_xml_array(cells, *a);
+  cells += "</Cells>\n";
+  return xml_file(g, "UnstructuredGrid", "NumberOfCells=\"" + std::to_string(g.cells.size()) + "\"", order, cells);
+}
+
+std::string vtp_string(const Model& m, const BeamSections* sections) {
+  const Grid g = grid_of(m, sections);
+  // PolyData keeps lines before polygons: the cell data follows that order.
+  std::vector<std::size_t> lines, polys;
+  for (std::size_t k = 0; k < g.cells.size(); ++k) (g.types[k] == 3 ? lines : polys).push_back(k);
+  std::string cells;
+  for (const auto& [name, list] : {std::pair{"Lines", &lines}, std::pair{"Polys", &polys}}) {
+    auto [connectivity, offsets] = connectivity_of(g, *list);
+    cells += std::string("<") + name + ">\n";
+    put_xml_array(cells, connectivity);
+    put_xml_array(cells, offsets);
+    cells += std::string("</") + name + ">\n";
+  }
+  std::vector<std::size_t> order = lines;
+  order.insert(order.end(), polys.begin(), polys.end());
+  return xml_file(g, "PolyData",
+                  "NumberOfVerts=\"0\" NumberOfLines=\"" + std::to_string(lines.size()) +
+                      "\" NumberOfStrips=\"0\" NumberOfPolys=\"" + std::to_string(polys.size()) + "\"",
+                  order, cells);
+}
+
 void save_vtk(const Model& m, const std::string& path, const BeamSections* sections) {
-  const bool xml = path.size() >= 4 && path.compare(path.size() - 4, 4, ".vtu") == 0;
-  write_file_atomically(path, xml ? vtu_string(m, sections) : vtk_string(m, sections));
+  write_file_atomically(path, ends_with(path, ".vtu")   ? vtu_string(m, sections)
+                              : ends_with(path, ".vtp") ? vtp_string(m, sections)
+                                                        : vtk_string(m, sections));
 }
 
 }  // namespace tendril

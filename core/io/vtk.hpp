@@ -1,7 +1,7 @@
 #pragma once
 // Results for ParaView (issue 14): an ASCII VTK unstructured grid of the
-// model's current state, legacy (.vtk) or VTK XML (.vtu), with the same
-// fields. Points: the live particles in id order, with point data
+// model's current state, legacy (.vtk) or VTK XML (.vtu), or VTK XML poly
+// data (.vtp: lines, then triangles), with the same fields. Points: the live particles in id order, with point data
 // `reaction` and `reaction_moment` (the supports' force and moment on
 // locked particles, from the last force evaluation: Solver::reaction) and
 // `locked`. Cells: one line per bar, cable segment, 3-DOF beam link and
@@ -21,7 +21,8 @@ namespace tendril {
 
 std::string vtk_string(const Model& m, const BeamSections* sections = nullptr);
 std::string vtu_string(const Model& m, const BeamSections* sections = nullptr);
-// .vtu: VTK XML, else legacy. Written whole or not at all; throws OutputError when it cannot be (io/atomic_file.hpp).
+std::string vtp_string(const Model& m, const BeamSections* sections = nullptr);
+// .vtu: VTK XML, .vtp: VTK XML poly data, else legacy. Written whole or not at all; throws OutputError when it cannot be (io/atomic_file.hpp).
 void save_vtk(const Model& m, const std::string& path, const BeamSections* sections = nullptr);
 
 }  // namespace tendril

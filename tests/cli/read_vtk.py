@@ -47,6 +47,7 @@ legacy.ReadAllScalarsOn()
 legacy.ReadAllVectorsOn()
 mass = check(legacy, sys.argv[1])
 check(vtk.vtkXMLUnstructuredGridReader(), sys.argv[3])  # the same grid as VTK XML (.vtu)
+check(vtk.vtkXMLPolyDataReader(), sys.argv[4])  # and as VTK XML poly data (.vtp)
 
 # The glTF: one polydata of two line segments (4 vertices), coloured, y up.
 gltf = vtk.vtkGLTFReader()

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -433,4 +434,71 @@ for _, s in ipairs(c:reactions()) do
   end
 end
 )") == "");
+}
+
+namespace {
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// The values of the VTK XML DataArray `name` of a file (the first such).
+std::vector<double> xml_array(const std::string& text, const std::string& name) {
+  const std::size_t at = text.find("Name=\"" + name + "\"");
+  REQUIRE(at != std::string::npos);
+  const std::size_t from = text.find('>', at) + 1, to = text.find("</DataArray>", from);
+  std::istringstream in(text.substr(from, to - from));
+  std::vector<double> out;
+  for (double x; in >> x;) out.push_back(x);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("m:export_vtk .vtp: lines then triangles, the cell data following them; the same values as .vtu") {
+  const auto out = std::filesystem::temp_directory_path() / "tendril-test-results" / "out";
+  REQUIRE(run("vtp.lua", R"(
+local m = tendril.model()
+local function row(y) local r = {} for i = 0, 2 do r[#r + 1] = m:particle{ i / 2, y, 3 } end return r end
+local patch = m:project{ from = row(0), to = row(1), rows = 1, EA = 10 }
+m:formulation(patch, "cst", { stress = { 0, 0 }, warp = { 1, 0, 0 }, analysis = { dxx = 800, dyy = 600, dxy = 240, dyx = 240, G = 30 } })
+for _, p in ipairs(m:particles(patch)) do local x = m:position(p) m:set_position(p, { 1.01 * x[1], x[2], x[3] }) m:lock(p, "xyz") end
+local a, b, c = m:particle{ -1, 0, -5 }, m:particle{ 1, 0, -5 }, m:particle{ 0, 0, -5.5 }
+m:cable(a, c, { EA = 1e7 })
+m:cable(c, b, { EA = 1e7 })
+m:lock(a, "xyz"); m:lock(b, "xyz")
+m:load(c, { 0, 0, -1000 })
+assert(m:run{ tolerance = 1e-6, max_steps = 200000 }.converged)
+m:export_vtk(tendril.out("r.vtu"))
+m:export_vtk(tendril.out("r.vtp"))
+)") == "");
+  const std::string vtu = slurp(out / "r.vtu"), vtp = slurp(out / "r.vtp");
+  CHECK(vtp.find("<VTKFile type=\"PolyData\"") != std::string::npos);
+  CHECK(vtp.find("NumberOfLines=\"10\" NumberOfStrips=\"0\" NumberOfPolys=\"8\"") != std::string::npos);
+  // .vtu in block order: the patch's 8 boundary bars, its 8 triangles, the 2 cable segments.
+  const std::vector<double> types = xml_array(vtu, "types");
+  REQUIRE(types.size() == 18);
+  for (std::size_t k = 0; k < 18; ++k) CHECK(types[k] == (k >= 8 && k < 16 ? 5 : 3));
+  // .vtp: the 10 lines (bars, then the cables), then the 8 triangles.
+  std::vector<std::size_t> order;
+  for (std::size_t k : {0, 1, 2, 3, 4, 5, 6, 7, 16, 17, 8, 9, 10, 11, 12, 13, 14, 15}) order.push_back(k);
+  for (const char* name : {"axial", "s1", "s2", "block"}) {
+    CAPTURE(name);
+    const std::vector<double> u = xml_array(vtu, name), p = xml_array(vtp, name);
+    REQUIRE(u.size() == 18);
+    REQUIRE(p.size() == 18);
+    for (std::size_t k = 0; k < 18; ++k) CHECK(p[k] == u[order[k]]);
+  }
+  CHECK(xml_array(vtp, "s1")[10] == doctest::Approx(8));  // plane stress, eps_x = 1 %
+  CHECK(xml_array(vtp, "axial")[8] > 1000);                 // a cable: P / (2 sin theta)
+  const std::vector<double> d1u = xml_array(vtu, "d1"), d1p = xml_array(vtp, "d1");
+  for (std::size_t k = 0; k < 18; ++k)
+    for (std::size_t c = 0; c < 3; ++c) CHECK(d1p[3 * k + c] == d1u[3 * order[k] + c]);
+  // The polygons' connectivity is the triangles' of .vtu.
+  const std::vector<double> cu = xml_array(vtu, "connectivity");
+  const std::size_t polys = vtp.find("<Polys>");
+  const std::vector<double> cp = xml_array(vtp.substr(polys), "connectivity");
+  REQUIRE(cp.size() == 24);
+  for (std::size_t k = 0; k < 24; ++k) CHECK(cp[k] == cu[16 + k]);
 }
