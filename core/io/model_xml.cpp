@@ -10,11 +10,13 @@
 #include "io/atomic_file.hpp"
 #include "io/input_file.hpp"
 #include "physics/settings_check.hpp"
+#include "query/element_results.hpp"
 
 #include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <map>
@@ -220,6 +222,13 @@ class Writer {
   void attr(const char* name, double v) { out_.PushAttribute(name, number(v).c_str()); }
   void attr(const char* name, unsigned v) { out_.PushAttribute(name, std::to_string(v).c_str()); }
   void attr(const char* name, const char* v) { out_.PushAttribute(name, v); }
+  // 12 significant digits: results (write_results), whose last bits may
+  // depend on which way an element is walked.
+  void result(const char* name, double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.12g", v);
+    out_.PushAttribute(name, buf);
+  }
 
  private:
   tinyxml2::XMLPrinter& out_;
@@ -230,6 +239,74 @@ void write_section(Writer& w, const Section& s) {
   w.attr("EI", s.EI);
   w.attr("prestress", s.prestress);
   w.attr("line_mass", s.line_mass);
+}
+
+// <results> (issue 14): what the model carries at its saved state, for the
+// tools that read the file (query/element_results.hpp), derived from the
+// state and so ignored on load (a loaded model computes them again). Only
+// quantities that do not depend on which way an element is walked are
+// written, each element by its particles in ascending file id, so that a
+// model saved, loaded and saved again writes the same bytes: per line
+// element (bar, cable segment, beam link or 6-DOF element) the axial force
+// [N], strain, slack flag, and on beams the resultant moment [N m] and the
+// curvature [1/m] at the end `at` where they are larger; per 3-DOF beam
+// vertex its curvature and moment; per CST triangle its stresses [N/m] in
+// its own frame and the principal stresses. Signed moments, torsion,
+// stresses with sections and reactions are in m:results and the VTK files.
+void write_results(Writer& w, const Model& m, const std::vector<unsigned>& dense) {
+  w.open("results");
+  unsigned id = 0;
+  for (BlockId b : m.live_blocks()) {
+    const BlockResults r = element_results(m, b);
+    const bool beam = m.blocks[b].kind == BlockKind::Beam;
+    std::vector<const LineResult*> lines;
+    for (const LineResult& l : r.lines) lines.push_back(&l);
+    auto ends = [&](const LineResult* l) { return std::minmax(dense[l->a], dense[l->b]); };
+    std::stable_sort(lines.begin(), lines.end(), [&](auto* x, auto* y) { return ends(x) < ends(y); });
+    for (const LineResult* l : lines) {
+      w.open("line");
+      w.attr("block", id);
+      w.attr("a", ends(l).first);
+      w.attr("b", ends(l).second);
+      w.result("axial", l->axial);
+      w.result("strain", l->strain);
+      if (l->slack) w.attr("slack", 1u);
+      if (beam) {
+        w.attr("at", dense[l->at]);
+        w.result("moment", l->moment);
+        w.result("curvature", l->curvature);
+      }
+      w.close();
+    }
+    std::vector<const VertexResult*> vertices;
+    for (const VertexResult& v : r.vertices) vertices.push_back(&v);
+    std::stable_sort(vertices.begin(), vertices.end(), [&](auto* x, auto* y) { return dense[x->p] < dense[y->p]; });
+    for (const VertexResult* v : vertices) {
+      w.open("vertex");
+      w.attr("block", id);
+      w.attr("p", dense[v->p]);
+      w.result("curvature", v->curvature);
+      w.result("moment", v->moment);
+      w.close();
+    }
+    std::vector<const TriangleResult*> triangles;
+    for (const TriangleResult& t : r.triangles) triangles.push_back(&t);
+    auto corners = [&](const TriangleResult* t) { return std::array{dense[t->i], dense[t->j], dense[t->k]}; };
+    std::stable_sort(triangles.begin(), triangles.end(), [&](auto* x, auto* y) { return corners(x) < corners(y); });
+    for (const TriangleResult* t : triangles) {
+      w.open("triangle");
+      w.attr("block", id);
+      for (int k = 0; k < 3; ++k) w.attr(k == 0 ? "a" : k == 1 ? "b" : "c", corners(t)[std::size_t(k)]);
+      w.result("warp", t->warp);
+      w.result("weft", t->weft);
+      w.result("shear", t->shear);
+      w.result("s1", t->s1);
+      w.result("s2", t->s2);
+      w.close();
+    }
+    ++id;
+  }
+  w.close();
 }
 
 // A beam's formulation and the section constants only the 6-DOF beam reads.
@@ -550,6 +627,7 @@ std::string write_document(const Model& m, const SolverSettings& s) {
     }
     w.close();
   }
+  write_results(w, m, dense);
   w.close();
   return std::string(out.CStr(), std::size_t(out.CStrSize() - 1));
 }
@@ -1149,7 +1227,7 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
   for (const tinyxml2::XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
     const std::string name = e->Name();
     if (name != "solver" && name != "gravity" && name != "particles" && name != "blocks" && name != "joints" &&
-        name != "goals" && name != "connections")
+        name != "goals" && name != "connections" && name != "results")
       fail(e, "unknown element <" + clipped(name.c_str()) + "> inside <tendril>");
     if (auto it = sections.find(name); it != sections.end())
       fail(e, "<" + name + "> is already given on line " + std::to_string(it->second->GetLineNum()));
@@ -1224,6 +1302,14 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
         no_children(c);
         d.joints.push_back(j);
       }
+    } else if (name == "results") {
+      // Derived from the state (write_results): a loaded model computes
+      // them again. Only their element names are checked.
+      Attributes(*this, e).done();
+      for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
+        if (std::strcmp(c->Name(), "line") != 0 && std::strcmp(c->Name(), "vertex") != 0 &&
+            std::strcmp(c->Name(), "triangle") != 0)
+          fail(c, "unknown element <" + clipped(c->Name()) + "> inside <results>");
     } else if (name == "particles") {
       Attributes(*this, e).done();
       for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {

@@ -1,6 +1,7 @@
 #include "query/element_results.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <unordered_map>
@@ -18,6 +19,9 @@ void principal_stresses(double sx, double sy, double tau, double& s1, double& s2
 }
 
 namespace {
+
+// Two end values within this relative difference are a tie (rounding).
+constexpr double kTie = 1e-12;
 
 double bar_axial(const Bar& bar, const Vec3* x, LineResult& r) {
   const double l = (x[bar.j] - x[bar.i]).norm();
@@ -47,11 +51,14 @@ void beam6_result(const Beam6& b, const Vec3* x, const Quat* q, const StressSect
   const double end_y[2] = {-e.ta.dot(U.col(1)), e.tb.dot(U.col(1))};
   const double end_z[2] = {-e.ta.dot(U.col(2)), e.tb.dot(U.col(2))};
   double worst = -1;
-  for (int k = 0; k < 2; ++k) {
+  // The end with the smaller particle id first, and a tie to rounding keeps
+  // it: the same end whichever way the element is walked (a reloaded ring
+  // may close the other way round).
+  for (int k : b.i < b.j ? std::array{0, 1} : std::array{1, 0}) {
     const double My = end_y[k], Mz = end_z[k];
     const double M = std::hypot(My, Mz);
     const double s = sec ? std::abs(r.axial) / sec->A + std::abs(My) / sec->Wy + std::abs(Mz) / sec->Wz : M;
-    if (s <= worst) continue;
+    if (worst >= 0 && s <= worst * (1 + kTie)) continue;
     worst = s;
     r.My = My, r.Mz = Mz, r.moment = M, r.at = k == 0 ? b.i : b.j;
     r.curvature = std::hypot(b.EIy > 0 ? My / b.EIy : 0.0, b.EIz > 0 ? Mz / b.EIz : 0.0);
@@ -98,7 +105,7 @@ BlockResults element_results(const Model& m, BlockId block, const StressSection*
   for (const Bar& bar : m.bars.items) {
     if (m.dart_block[bar.dart] != block) continue;
     LineResult r{bar.i, bar.j};
-    r.at = bar.i;  // no moment: the stress is N / A all along
+    r.at = std::min(bar.i, bar.j);  // no moment: the stress is N / A all along
     bar_axial(bar, x, r);
     out.lines.push_back(r);
   }
@@ -117,9 +124,11 @@ BlockResults element_results(const Model& m, BlockId block, const StressSection*
     for (const VertexResult& v : out.vertices) vertex.emplace(v.p, &v);
     const double W = sec ? std::min(sec->Wy, sec->Wz) : 0;
     for (LineResult& r : out.lines) {
-      for (ParticleId p : {r.a, r.b}) {
+      bool found = false;  // as for 6 DOF: the smaller id first, ties keep it
+      for (ParticleId p : {std::min(r.a, r.b), std::max(r.a, r.b)}) {
         auto it = vertex.find(p);
-        if (it == vertex.end() || std::abs(it->second->moment) < r.moment) continue;
+        if (it == vertex.end() || (found && std::abs(it->second->moment) <= r.moment * (1 + kTie))) continue;
+        found = true;
         r.moment = std::abs(it->second->moment);
         r.at = p;
         r.My = it->second->moment;

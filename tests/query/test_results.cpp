@@ -17,6 +17,7 @@
 #include <tiny_gltf.h>
 
 #include "io/gltf.hpp"
+#include "io/model_xml.hpp"
 #include "lua_host.hpp"
 #include "query/element_results.hpp"
 
@@ -501,4 +502,66 @@ m:export_vtk(tendril.out("r.vtp"))
   const std::vector<double> cp = xml_array(vtp.substr(polys), "connectivity");
   REQUIRE(cp.size() == 24);
   for (std::size_t k = 0; k < 24; ++k) CHECK(cp[k] == cu[16 + k]);
+}
+
+TEST_CASE("model database <results>: the hanging cables' N = P / (2 sin theta), a ring's moment; refused garbage") {
+  const auto out = std::filesystem::temp_directory_path() / "tendril-test-results" / "out";
+  REQUIRE(run("db.lua", R"(
+local m = tendril.model()
+local a, b, c = m:particle{ -1, 0, 0 }, m:particle{ 1, 0, 0 }, m:particle{ 0, 0, -0.5 }
+m:cable(a, c, { EA = 1e7 })
+m:cable(c, b, { EA = 1e7 })
+m:lock(a, "xyz"); m:lock(b, "xyz")
+m:load(c, { 0, 0, -1000 })
+-- a straight 3-DOF beam bent into a closed ring of radius 1: M = EI / R at every vertex
+local pts = {}
+for i = 0, 23 do local t = 2 * math.pi * i / 24 pts[#pts + 1] = { math.cos(t), math.sin(t), 5 } end
+local ring = m:beam{ points = pts, EA = 1e6, EI = 2, closed = true }
+for _, p in ipairs(m:particles(ring)) do m:lock(p, "xyz") end
+assert(m:run{ tolerance = 1e-7, max_steps = 200000 }.converged)
+m:save(tendril.out("db.xml"))
+)") == "");
+  const std::string text = slurp(out / "db.xml");
+  const std::size_t results = text.find("<results>");
+  REQUIRE(results != std::string::npos);
+  auto attr = [](const std::string& line, const std::string& name) {
+    const std::size_t at = line.find(" " + name + "=\"") + name.size() + 3;
+    return std::stod(line.substr(at, line.find('"', at) - at));
+  };
+  std::istringstream in(text.substr(results));
+  int cables = 0, vertices = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("<line block=\"0\"") != std::string::npos || line.find("<line block=\"1\"") != std::string::npos) {
+      // the cable's own geometry from the particles' saved positions is statics' sin theta
+      CHECK(attr(line, "a") < attr(line, "b"));
+      CHECK(attr(line, "axial") > 1000);
+      ++cables;
+    }
+    if (line.find("<vertex block=\"2\"") != std::string::npos) {
+      // three particles of a circle of R = 1: the hinge's curvature 2 sin(alpha) / Lc
+      // (eq. 3.41) is their circumcircle's, 1 / R, and M = EI / R
+      CHECK(attr(line, "curvature") == doctest::Approx(1).epsilon(1e-9));
+      CHECK(attr(line, "moment") == doctest::Approx(2).epsilon(1e-9));
+      ++vertices;
+    }
+  }
+  CHECK(cables == 2);
+  CHECK(vertices == 24);
+  // Statics: the two segments carry P / (2 sin theta) for the sag the solver found.
+  Model loaded;
+  SolverSettings settings;
+  load_model_xml_string(text, loaded, settings, "db.xml");
+  CHECK(model_xml_string(loaded, settings) == text);
+  const Vec3 mass = loaded.particles.position[2];
+  const double sin_theta = -mass.z() / std::hypot(1.0, mass.z());
+  std::istringstream again(text.substr(results));
+  for (std::string line; std::getline(again, line);)
+    if (line.find("<line block=\"0\"") != std::string::npos)
+      CHECK(attr(line, "axial") == doctest::Approx(1000 / (2 * sin_theta)).epsilon(1e-6));
+  // A <results> holding anything else is refused, naming it.
+  std::string bad = text;
+  bad.insert(bad.find("<results>") + 9, "<reaction p=\"0\"/>");
+  Model refused;
+  CHECK_THROWS_WITH_AS(load_model_xml_string(bad, refused, settings, "bad.xml"),
+                       doctest::Contains("unknown element <reaction> inside <results>"), std::exception);
 }
