@@ -14,6 +14,7 @@
 #include "lua_rules.hpp"
 #include "lua_scene.hpp"
 #include "lua_section_args.hpp"
+#include "ply_openmesh.hpp"
 
 namespace tendril::lua {
 
@@ -26,7 +27,7 @@ ImportedMesh read_mesh(lua_State* L, int idx, int arg, const char* fn) {
   if (lua_type(L, idx) != LUA_TSTRING) arg_error(fn, arg, "expected a file name");
   const char* path = lua_tostring(L, idx);
   try {
-    return import_mesh(path);
+    return meshing::import_mesh_file(path);  // binary PLY through OpenMesh
   } catch (const std::exception& e) {
     throw LuaArgError(std::string(fn) + ": " + e.what());
   }

@@ -10,6 +10,8 @@
 #include <memory>
 
 #include "folded_quads.hpp"
+#include "io/atomic_file.hpp"
+#include "ply_openmesh.hpp"
 #include "io/model_xml.hpp"
 #include "io/ccx.hpp"
 #include "io/obj.hpp"
@@ -653,6 +655,14 @@ int l_save_obj(lua_State* L) {
 int l_save_ply(lua_State* L) {
   Scene& s = check_scene(L, "save_ply");
   if (lua_type(L, 2) != LUA_TSTRING) arg_error("save_ply", 2, "expected a file name");
+  if (!lua_isnoneornil(L, 3)) {  // {binary = true}: the patches through OpenMesh
+    check_table(L, 3, "save_ply");
+    check_keys(L, 3, "save_ply", {"binary"});
+    if (field_bool(L, 3, "binary", "save_ply", false)) {
+      write_file_atomically(lua_tostring(L, 2), meshing::patches_ply_binary(s.model));
+      return 0;
+    }
+  }
   save_ply(s.model, lua_tostring(L, 2));
   return 0;
 }

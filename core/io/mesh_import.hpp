@@ -8,7 +8,8 @@
 // skipped. PLY: ASCII, its vertex x y z, its edges (vertex1 vertex2) as
 // polylines (an edge that starts where the last ended continues it) and its faces (vertex_indices) in one group, or in
 // one group per value of an edge's or face's `block` property (what
-// tendril's PLY writes). A malformed file is refused naming its line.
+// tendril's PLY writes); binary PLY goes through OpenMesh in the meshing
+// layer (meshing/ply_openmesh.hpp). A malformed file is refused naming its line.
 #include <string>
 #include <vector>
 
