@@ -1,6 +1,7 @@
 #include "lua_readouts.hpp"
 
 #include <cstdint>
+#include <string>
 
 #include "lua_args.hpp"
 #include "lua_scene.hpp"
@@ -13,10 +14,12 @@ struct Readout {
   const char* name;
   enum Of { Model, Particle, Block } of;
   void (*push)(lua_State* L, Scene& s, std::uint32_t id);  // pushes one value
+  const char* instead = nullptr;  // what changes it, for the error of a call that gives a value
 };
 
 const Readout kReadouts[] = {
-    {"position", Readout::Particle, [](lua_State* L, Scene& s, std::uint32_t p) { push_vec3(L, s.model.particles.position[p]); }},
+    {"position", Readout::Particle, [](lua_State* L, Scene& s, std::uint32_t p) { push_vec3(L, s.model.particles.position[p]); },
+     "m:set_position(p, {x, y, z}) moves a particle"},
     {"velocity", Readout::Particle, [](lua_State* L, Scene& s, std::uint32_t p) { push_vec3(L, s.model.particles.velocity[p]); }},
     {"reaction", Readout::Particle, [](lua_State* L, Scene& s, std::uint32_t p) { push_vec3(L, s.solver.reaction(p)); }},
     {"state", Readout::Particle,
@@ -36,6 +39,11 @@ int l_readout(lua_State* L) {
   std::uint32_t id = 0;
   if (r.of == Readout::Particle) id = check_particle(L, 2, s, r.name);
   else if (r.of == Readout::Block) id = check_block(L, 2, s, r.name);
+  // A readout takes no value: m:position(p, {1, 2, 3}) used to read and
+  // ignore the point, the particle staying where it was.
+  const int takes = r.of == Readout::Model ? 1 : 2;
+  if (lua_gettop(L) > takes)
+    arg_error(r.name, takes + 1, std::string("a readout takes no value") + (r.instead ? std::string("; ") + r.instead : ""));
   r.push(L, s, id);
   return 1;
 }

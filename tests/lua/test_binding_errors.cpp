@@ -44,3 +44,17 @@ TEST_CASE("a refused call leaks nothing: 20 000 refusals leave the heap as 6 did
   // The leak was ~200 bytes a message: 4 MB here.
   CHECK(many < few + (1u << 20));
 }
+
+TEST_CASE("a readout given a value refuses it and says what changes it (m:position(p, x) moved nothing)") {
+  std::string error;
+  test::run_scene_in(std::filesystem::temp_directory_path() / "tendril-test-readout-value", R"(
+local m = tendril.model()
+local p = m:particle{ 0, 0, 0 }
+local ok, err = pcall(m.position, m, p, { 1, 2, 3 })
+assert(not ok and err:find("position: argument 3: a readout takes no value; m:set_position(p, {x, y, z}) moves a particle", 1, true), err)
+assert(m:position(p)[1] == 0)
+ok, err = pcall(m.residual, m, 5)
+assert(not ok and err:find("residual: argument 2: a readout takes no value", 1, true), err)
+)", &error);
+  CHECK(error == "");
+}
