@@ -30,92 +30,182 @@ void add_term(Triplets& t, const std::vector<int>& row, const ParticleId (&ps)[N
 
 }  // namespace
 
-void ProjectiveSystem::factor(const Key& key, const Model& m, const Vec3* x, const std::vector<double>& inertia,
-                              const std::vector<double>& diagonal) {
-  factored_ = false;
+std::array<std::vector<int>, 3> ProjectiveSystem::rows_of(const Model& m, std::array<int, 3>& count) const {
   const Particles& P = m.particles;
-  const std::size_t n = P.capacity();
-  std::array<int, 3> rows{};
+  std::array<std::vector<int>, 3> row;
+  count = {};
   for (int a = 0; a < 3; ++a) {
-    row_[a].assign(n, -1);
+    row[a].assign(P.capacity(), -1);
     for (ParticleId p : P.integrated.raw())
-      if (!(P.lock[p] & (kLockX << a))) row_[a][p] = rows[a]++;
+      if (!(P.lock[p] & (kLockX << a))) row[a][p] = count[a]++;
   }
-  const double gf = key.geometric_factor;
+  return row;
+}
+
+Eigen::SparseMatrix<double> ProjectiveSystem::assemble(const Model& m, const std::vector<int>& row, int rows,
+                                                       const Vec3* x, double inv_dt2,
+                                                       const std::vector<double>& diagonal) const {
+  const Particles& P = m.particles;
+  const double gf = key_.geometric_factor;
+  Triplets t;
+  for (ParticleId p : P.integrated.raw())
+    if (row[p] >= 0) t.emplace_back(row[p], row[p], mass_[p] * inv_dt2 + diagonal[p]);
+  for (const Bar* bp = m.bars.awake_begin(); bp != m.bars.awake_end(); ++bp) {  // dormant ones never act
+    const Bar& b = *bp;
+    const double l = (x[b.j] - x[b.i]).norm(), k = b.EA / b.rest_length;
+    const double T = b.prestress + k * (l - b.rest_length);
+    add_term<2>(t, row, {b.i, b.j}, {-1, 1}, k + (l > 0 && T > 0 ? gf * T / l : 0.0));
+  }
+  for (const Hinge* hp = m.hinges.awake_begin(); hp != m.hinges.awake_end(); ++hp) {
+    const Hinge& h = *hp;
+    const double l = 0.5 * ((x[h.j] - x[h.i]).norm() + (x[h.k] - x[h.j]).norm());
+    add_term<3>(t, row, {h.i, h.j, h.k}, {1, -2, 1}, h.EI / (l * l * l));
+  }
+  for (const Beam6* bp = m.beam6s.awake_begin(); bp != m.beam6s.awake_end(); ++bp) {
+    const Beam6& b = *bp;
+    const double L = b.rest_length;
+    const double w = std::max(b.EA / L, 12 * std::max(b.EIy, b.EIz) / (L * L * L));
+    add_term<2>(t, row, {b.i, b.j}, {-1, 1}, w);
+  }
+  for (const Goal& g : m.goals) {
+    if (g.kind == Goal::Length) {
+      add_term<2>(t, row, {g.i, g.j}, {-1, 1}, g.weight);
+    } else if (g.kind == Goal::Planar) {  // w (I - 1 1^T / 4): the corners about their centroid
+      const ParticleId c[4] = {g.i, g.j, g.k, g.l};
+      for (int a = 0; a < 4; ++a) {
+        double coef[4] = {-0.25, -0.25, -0.25, -0.25};
+        coef[a] += 1;
+        add_term<4>(t, row, {c[0], c[1], c[2], c[3]}, coef, g.weight);
+      }
+    } else {
+      add_term<1>(t, row, {g.i}, {1}, g.weight);
+    }
+  }
+  for (const RotationalJoint& jt : m.joints.items) {
+    ParticleId nb[4];
+    if (!m.joint_neighbours(jt.particle, nb)) continue;
+    for (ParticleId q : nb) add_term<2>(t, row, {jt.particle, q}, {-1, 1}, jt.stiffness);
+  }
+  Eigen::SparseMatrix<double> A(rows, rows);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+
+void ProjectiveSystem::factor_axis(Axis& s, int a) {
+  s.factor.compute(s.A);
+  if (s.factor.info() != Eigen::Success || (s.factor.vectorD().array() <= 0).any())
+    throw NumericalError("projective: the global matrix of axis " + std::string(1, char('x' + a)) +
+                         " is not positive definite (a free particle without mass or stiffness?)");
+  s.change.clear();
+  s.changed.clear();
+  // A changed row costs 2 n flops per solve on top of the triangular solves'
+  // 4 nnz(L): beyond nnz(L) / n rows a factorisation pays (and Z, n per row,
+  // would outgrow L). At least 16, so that small models refactor rarely too.
+  const std::size_t n = std::size_t(std::max<Eigen::Index>(1, s.A.rows()));
+  const std::size_t nnzL = std::size_t(s.factor.matrixL().nestedExpression().nonZeros());
+  s.budget = std::clamp<std::size_t>(nnzL / n, 16, 256);
+  s.b.resize(s.A.rows());
+}
+
+void ProjectiveSystem::factor(const Key& key, std::uint64_t revision, const Model& m, const Vec3* x,
+                              const std::vector<double>& mass, double inv_dt2, const std::vector<double>& diagonal) {
+  factored_ = false;
+  key_ = key;
+  const std::size_t n = m.particles.capacity();
+  reference_.assign(x, x + n);
+  mass_.assign(mass.begin(), mass.end());
+  std::array<int, 3> count{};
+  std::array<std::vector<int>, 3> row = rows_of(m, count);
   for (int a = 0; a < 3; ++a) {
     int same = -1;
     for (int b = 0; b < a && same < 0; ++b)
-      if (row_[b] == row_[a]) same = b;
+      if (row[b] == row[a]) same = b;
     if (same >= 0) {
-      factor_[a] = factor_[same];
+      axis_[a] = axis_[same];
       continue;
     }
-    const std::vector<int>& row = row_[a];
-    Triplets t;
-    for (ParticleId p : P.integrated.raw())
-      if (row[p] >= 0) t.emplace_back(row[p], row[p], inertia[p] + diagonal[p]);
-    for (const Bar* bp = m.bars.awake_begin(); bp != m.bars.awake_end(); ++bp) {  // dormant ones never act
-      const Bar& b = *bp;
-      const double l = (x[b.j] - x[b.i]).norm(), k = b.EA / b.rest_length;
-      const double T = b.prestress + k * (l - b.rest_length);
-      add_term<2>(t, row, {b.i, b.j}, {-1, 1}, k + (l > 0 && T > 0 ? gf * T / l : 0.0));
-    }
-    for (const Hinge* hp = m.hinges.awake_begin(); hp != m.hinges.awake_end(); ++hp) {
-      const Hinge& h = *hp;
-      const double l = 0.5 * ((x[h.j] - x[h.i]).norm() + (x[h.k] - x[h.j]).norm());
-      add_term<3>(t, row, {h.i, h.j, h.k}, {1, -2, 1}, h.EI / (l * l * l));
-    }
-    for (const Beam6* bp = m.beam6s.awake_begin(); bp != m.beam6s.awake_end(); ++bp) {
-      const Beam6& b = *bp;
-      const double L = b.rest_length;
-      const double w = std::max(b.EA / L, 12 * std::max(b.EIy, b.EIz) / (L * L * L));
-      add_term<2>(t, row, {b.i, b.j}, {-1, 1}, w);
-    }
-    for (const Goal& g : m.goals) {
-      if (g.kind == Goal::Length) {
-        add_term<2>(t, row, {g.i, g.j}, {-1, 1}, g.weight);
-      } else if (g.kind == Goal::Planar) {  // w (I - 1 1^T / 4): the corners about their centroid
-        const ParticleId c[4] = {g.i, g.j, g.k, g.l};
-        for (int a = 0; a < 4; ++a) {
-          double coef[4] = {-0.25, -0.25, -0.25, -0.25};
-          coef[a] += 1;
-          add_term<4>(t, row, {c[0], c[1], c[2], c[3]}, coef, g.weight);
-        }
-      } else {
-        add_term<1>(t, row, {g.i}, {1}, g.weight);
-      }
-    }
-    for (const RotationalJoint& jt : m.joints.items) {
-      ParticleId nb[4];
-      if (!m.joint_neighbours(jt.particle, nb)) continue;
-      for (ParticleId q : nb) add_term<2>(t, row, {jt.particle, q}, {-1, 1}, jt.stiffness);
-    }
-    Eigen::SparseMatrix<double> A(rows[a], rows[a]);
-    A.setFromTriplets(t.begin(), t.end());
-    auto f = std::make_shared<Factor>(A);
-    if (f->info() != Eigen::Success || (f->vectorD().array() <= 0).any())
-      throw NumericalError("projective: the global matrix of axis " + std::string(1, char('x' + a)) +
-                           " is not positive definite (a free particle without mass or stiffness?)");
-    factor_[a] = f;
+    auto s = std::make_shared<Axis>();
+    s->row = std::move(row[a]);
+    s->A = assemble(m, s->row, count[a], x, inv_dt2, diagonal);
+    factor_axis(*s, a);
+    axis_[a] = s;
   }
-  for (int a = 0; a < 3; ++a) b_[a].resize(rows[a]);
-  key_ = key;
+  revision_ = revision;
   factored_ = true;
   ++factorizations_;
+}
+
+bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Model& m,
+                              const std::vector<double>& mass, bool follow_mass, double inv_dt2,
+                              const std::vector<double>& diagonal) {
+  if (!factored_ || !(key_ == key)) return false;
+  std::array<int, 3> count{};
+  const std::array<std::vector<int>, 3> row = rows_of(m, count);
+  for (int a = 0; a < 3; ++a)
+    if (row[a] != axis_[a]->row) return false;
+  factored_ = false;  // until every axis follows
+  if (follow_mass)
+    for (ParticleId p : m.particles.integrated.raw()) mass_[p] = mass[p];
+  for (int a = 0; a < 3; ++a) {
+    bool shared = false;  // with an axis done already
+    for (int b = 0; b < a; ++b) shared |= axis_[b] == axis_[a];
+    if (shared) continue;
+    Axis& s = *axis_[a];
+    Eigen::SparseMatrix<double> A = assemble(m, s.row, count[a], reference_.data(), inv_dt2, diagonal);
+    const Eigen::SparseMatrix<double> D = A - s.A;
+    // Changed rows: unchanged elements add the same terms in the same order
+    // at the same positions, so their entries repeat bit for bit; the
+    // threshold only forgives a sum taken in another order (elements moved
+    // in their arrays).
+    const Eigen::VectorXd diag = A.diagonal().cwiseAbs();
+    std::vector<char> in(std::size_t(A.rows()), 0);
+    for (int r : s.changed) in[std::size_t(r)] = 1;
+    std::vector<char> fresh(std::size_t(A.rows()), 0);
+    for (Eigen::Index c = 0; c < D.outerSize(); ++c)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(D, c); it; ++it)
+        if (std::abs(it.value()) > 1e-13 * std::sqrt(diag[it.row()] * diag[c])) {
+          fresh[std::size_t(it.row())] = 1;
+          fresh[std::size_t(c)] = 1;
+        }
+    for (std::size_t r = 0; r < fresh.size(); ++r)
+      if (fresh[r] && !in[r]) s.changed.push_back(int(r));
+    if (s.changed.size() > s.budget) return false;
+    if (low_rank) {
+      const Eigen::Index k = Eigen::Index(s.changed.size());
+      Eigen::MatrixXd C = Eigen::MatrixXd::Zero(k, k);
+      std::vector<int> place(std::size_t(A.rows()), -1);
+      for (Eigen::Index i = 0; i < k; ++i) place[std::size_t(s.changed[std::size_t(i)])] = int(i);
+      for (int r : s.changed)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(D, r); it; ++it)  // symmetric: column r is row r
+          if (place[std::size_t(it.row())] >= 0) C(place[std::size_t(it.row())], place[std::size_t(r)]) = it.value();
+      if (!s.change.set(s.factor, s.changed, C)) return false;
+    } else {
+      const std::vector<int> changed = s.changed;
+      s.A = std::move(A);
+      factor_axis(s, a);
+      s.changed = changed;  // the budget counts from the last factor() in both ways
+    }
+  }
+  revision_ = revision;
+  factored_ = true;
+  ++updates_;
+  return true;
 }
 
 void ProjectiveSystem::solve(const Model& m, Vec3* rhs) {
   const std::vector<ParticleId>& integrated = m.particles.integrated.raw();
   for (int a = 0; a < 3; ++a) {
-    const std::vector<int>& row = row_[a];
+    Axis& s = *axis_[a];
+    const std::vector<int>& row = s.row;
     for (ParticleId p : integrated)
-      if (row[p] >= 0) b_[a][row[p]] = rhs[p][a];
-    if (b_[a].size() != 0) b_[a] = factor_[a]->solve(b_[a]);
-    for (ParticleId p : integrated) rhs[p][a] = row[p] >= 0 ? b_[a][row[p]] : 0.0;
+      if (row[p] >= 0) s.b[row[p]] = rhs[p][a];
+    if (s.b.size() != 0) s.change.solve(s.factor, s.b);
+    for (ParticleId p : integrated) rhs[p][a] = row[p] >= 0 ? s.b[row[p]] : 0.0;
   }
 }
 
 std::uint64_t Solver::factorizations() const { return projective_ ? projective_->factorizations() : 0; }
+std::uint64_t Solver::projective_updates() const { return projective_ ? projective_->updates() : 0; }
 
 void Solver::integrate_projective() {
   const double dt = vie_dt(), inv_dt2 = 1 / (dt * dt);
@@ -123,21 +213,33 @@ void Solver::integrate_projective() {
   const std::size_t n = P.capacity();
   const std::vector<ParticleId>& integrated = P.integrated.raw();
   if (!projective_) projective_ = std::make_shared<ProjectiveSystem>();
-  const ProjectiveSystem::Key key{&model_,         model_.revision, n, settings.dt, dt, settings.mass_factor,
-                                  settings.geometric_factor, int(settings.mass_mode)};
-  if (!projective_->current(key)) {
-    // Fictitious masses are eq. 3.4's at the factorisation and stay with it.
-    projective_mass_.assign(mass_.begin(), mass_.end());
-    std::vector<double> inertia(n, 0.0), diagonal(n, 0.0);
-    for (ParticleId p : integrated) inertia[p] = projective_mass_[p] * inv_dt2;
-    if (!model_.csts.items.empty()) {
+  projective_->low_rank = projective_low_rank_;
+  const ProjectiveSystem::Key key{&model_, n, settings.dt, dt, settings.mass_factor, settings.geometric_factor,
+                                  int(settings.mass_mode)};
+  if (!projective_->current(key, model_.revision)) {
+    std::vector<double> diagonal(n, 0.0);
+    auto cst_diagonal = [&](const Vec3* x) {
+      if (model_.csts.items.empty()) return;
       cst_weight_.assign(n, 0.0);
-      accumulate_cst_forces(P.position.data(), vs_.data(), cst_weight_.data());
+      accumulate_cst_forces(x, vs_.data(), cst_weight_.data());
       for (std::size_t p = 0; p < n; ++p) diagonal[p] = 2 * cst_weight_[p];
+    };
+    // Fictitious masses are eq. 3.4's at the factorisation and stay with it;
+    // physical ones are the model's and followed.
+    const bool physical = settings.mass_mode == MassMode::Physical;
+    bool followed = false;
+    if (projective_->reference().size() == n) {
+      cst_diagonal(projective_->reference().data());
+      followed = projective_->update(key, model_.revision, model_, mass_, physical, inv_dt2, diagonal);
     }
-    projective_->factor(key, model_, P.position.data(), inertia, diagonal);
+    if (!followed) {
+      std::fill(diagonal.begin(), diagonal.end(), 0.0);
+      cst_diagonal(P.position.data());
+      projective_->factor(key, model_.revision, model_, P.position.data(), mass_, inv_dt2, diagonal);
+    }
   }
-  for (ParticleId p : integrated) mass_[p] = projective_mass_[p];
+  const std::vector<double>& frozen = projective_->mass();
+  for (ParticleId p : integrated) mass_[p] = frozen[p];
   start_implicit_step(dt);
   const std::uint8_t* lock = P.lock.data();
   for (int it = 0; it < settings.vie_iterations; ++it) {

@@ -6,8 +6,9 @@
 // (projections.hpp), so with L = sum w_k A_k^T A_k the right-hand side is
 // M/dt^2 x0 + L x + F(x), and the step solves for the increment
 //   (M/dt^2 + L) dx = M/dt^2 (x0 - x) + F(x)
-// over the free coordinates (locked axes and inactive particles stay). L is
-// constant between topology changes and is factored once (sparse LDL^T):
+// over the free coordinates (locked axes and inactive particles stay). The
+// weights are taken at the positions of a full factorisation (sparse LDL^T)
+// and stay with it:
 //   bars, cables    w = EA/L + g T/l on the edge (A: x_j - x_i), T the
 //                   tension at factorisation;
 //   3-DOF hinges    w = EI / l^3 on the second difference x_i - 2 x_j + x_k,
@@ -18,6 +19,16 @@
 //   CST membranes   twice each corner's eq. 3.40 stiffness on its diagonal;
 //   goals           the weight on the particle's diagonal (anchor, plane,
 //                   line) or on the edge (length).
+// A topology or parameter change (the model's revision moves) is followed
+// locally when the particles and their locks stay: the matrix is assembled
+// again at the same reference positions, so only the changed elements'
+// rows differ, and the old factor solves the new matrix exactly through a
+// low-rank correction (low_rank_solve.hpp) - a new cable costs two solves,
+// not a factorisation. Fictitious masses stay those of the factorisation;
+// physical ones are followed. A full factorisation at the current positions
+// comes when a particle, a lock, dt or the mass mode changes, or when the
+// changed rows since the last one exceed nnz(L) / n, where the correction
+// would cost more per solve than the triangular solves themselves.
 // A fixed point is an equilibrium whatever the weights: they only decide how
 // fast the iterations get there.
 #include <Eigen/SparseCholesky>
@@ -27,38 +38,70 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "physics/low_rank_solve.hpp"
 
 namespace tendril {
 
 class ProjectiveSystem {
  public:
-  // What the factorisation depends on besides the model's revision.
+  // What a factorisation depends on besides the elements: a change here
+  // refactors.
   struct Key {
     const Model* model = nullptr;
-    std::uint64_t revision = 0;
     std::size_t capacity = 0;
     double dt = 0, step_dt = 0, mass_factor = 0, geometric_factor = 0;
     int mass_mode = 0;
     bool operator==(const Key&) const = default;
   };
-  bool current(const Key& k) const { return factored_ && key_ == k; }
-  // Assembles and factors M/dt^2 + L at positions x. `inertia` is M/dt^2
-  // per particle, `diagonal` extra per-particle weights (CST). Throws
-  // NumericalError when the matrix is not positive definite.
-  void factor(const Key& key, const Model& m, const Vec3* x, const std::vector<double>& inertia,
-              const std::vector<double>& diagonal);
+  bool current(const Key& k, std::uint64_t revision) const {
+    return factored_ && key_ == k && revision_ == revision;
+  }
+  // Assembles M/dt^2 + L at positions x, with `mass` (frozen with the factor,
+  // mass()) and `diagonal` extra per-particle weights (CST), and factors it.
+  // Throws NumericalError when the matrix is not positive definite.
+  void factor(const Key& key, std::uint64_t revision, const Model& m, const Vec3* x, const std::vector<double>& mass,
+              double inv_dt2, const std::vector<double>& diagonal);
+  // Follows a change of the model (same key) locally: assembles at
+  // reference() with mass() - where `follow_mass` (physical masses) the
+  // particles whose `mass` changed take it - and `diagonal` (CST at
+  // reference()). False when it needs factor(): another key, other rows,
+  // too many changed rows, or a matrix the correction would not keep
+  // positive definite.
+  bool update(const Key& key, std::uint64_t revision, const Model& m, const std::vector<double>& mass, bool follow_mass,
+              double inv_dt2, const std::vector<double>& diagonal);
   // dx for the free coordinates of every particle: rhs -> increments, in place.
   void solve(const Model& m, Vec3* rhs);
+  const std::vector<Vec3>& reference() const { return reference_; }  // x of the last factor()
+  const std::vector<double>& mass() const { return mass_; }
   std::uint64_t factorizations() const { return factorizations_; }
+  std::uint64_t updates() const { return updates_; }
+  // Off: update() factors the updated matrix afresh instead of correcting
+  // the old factor (the same matrix: what the tests check the correction
+  // against).
+  bool low_rank = true;
 
  private:
   using Factor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
+  struct Axis {  // the system of one axis; axes with equal rows share one
+    std::vector<int> row;          // particle -> row, or -1 (fixed)
+    Eigen::SparseMatrix<double> A;  // what `factor` factors
+    Factor factor;
+    LowRankSolve change;           // A + change: the current matrix
+    std::vector<int> changed;      // rows changed since factor(), in order
+    std::size_t budget = 0;        // how many may before factor() pays
+    Eigen::VectorXd b;
+  };
+  Eigen::SparseMatrix<double> assemble(const Model& m, const std::vector<int>& row, int rows, const Vec3* x,
+                                       double inv_dt2, const std::vector<double>& diagonal) const;
+  void factor_axis(Axis& s, int a);
+  std::array<std::vector<int>, 3> rows_of(const Model& m, std::array<int, 3>& count) const;
   Key key_;
+  std::uint64_t revision_ = 0;
   bool factored_ = false;
-  std::uint64_t factorizations_ = 0;
-  std::array<std::vector<int>, 3> row_;            // per axis: particle -> row, or -1 (fixed)
-  std::array<std::shared_ptr<Factor>, 3> factor_;  // axes with equal rows share one
-  std::array<Eigen::VectorXd, 3> b_;
+  std::uint64_t factorizations_ = 0, updates_ = 0;
+  std::array<std::shared_ptr<Axis>, 3> axis_;
+  std::vector<Vec3> reference_;
+  std::vector<double> mass_;
 };
 
 }  // namespace tendril

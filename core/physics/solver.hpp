@@ -153,6 +153,12 @@ class Solver {
   const char* phase() const;
   // ProjectiveDynamics: how often its global matrix was factored.
   std::uint64_t factorizations() const;
+  // ProjectiveDynamics: how many topology or parameter changes it followed
+  // without a factorisation (projective.hpp: a low-rank correction).
+  std::uint64_t projective_updates() const;
+  // Off: every change is factored afresh (the same matrix; what the tests
+  // compare the low-rank correction with).
+  void set_projective_low_rank(bool on) { projective_low_rank_ = on; }
   // The force the supports exert on a locked particle (minus the residual
   // force along its locked axes) at the start of the last step.
   Vec3 reaction(ParticleId p) const;
@@ -302,7 +308,7 @@ class Solver {
   };
   std::vector<ChunkSums> chunk_sums_;
   mutable std::vector<std::uint32_t> thread_first_chunk_;  // for_chunks: each thread's range
-  std::vector<double> projective_mass_;             // M frozen with its factorisation
+  bool projective_low_rank_ = true;
   bool mixed_implicit_ = false;      // Mixed: in its implicit phase
   double mixed_peak_ = 0, mixed_entry_ = 0;
 };

@@ -46,7 +46,7 @@ TEST_CASE("projective: the elastica (3 and 6 DOF) and the catenary within tolera
   CHECK(s.factorizations() == 1);
 }
 
-TEST_CASE("projective: refactors only when topology, locks or masses change, never for loads") {
+TEST_CASE("projective: refactors only when locks or dt change, follows a new cable, never for loads") {
   Chain c(20);
   Solver s(c.m);
   s.settings.integrator = Integrator::ProjectiveDynamics;
@@ -61,12 +61,13 @@ TEST_CASE("projective: refactors only when topology, locks or masses change, nev
   CHECK(s.factorizations() == 2);
   c.m.add_cable(c.ps[4], c.ps[16], Section{1e5, 0, 0, 0});  // rule 6: a new bar across the chain
   s.step();
-  CHECK(s.factorizations() == 3);
+  CHECK(s.factorizations() == 2);  // followed by a low-rank correction (test_projective_update.cpp)
+  CHECK(s.projective_updates() == 1);
   for (int k = 0; k < 50; ++k) s.step();
-  CHECK(s.factorizations() == 3);
+  CHECK(s.factorizations() == 2);
   s.settings.vie_dt = 7;  // the momentum weight is on the diagonal
   s.step();
-  CHECK(s.factorizations() == 4);
+  CHECK(s.factorizations() == 3);
   // The refactored system still solves the loaded, locked, refined chain.
   REQUIRE(s.run(1e-6, 1'000'000).converged);
   CHECK(c.m.particles.position[c.ps[5]].z() == locked_z);

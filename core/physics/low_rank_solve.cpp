@@ -1,0 +1,46 @@
+// Sherman-Morrison-Woodbury on the old factor (low_rank_solve.hpp).
+#include "physics/low_rank_solve.hpp"
+
+#include <cmath>
+
+namespace tendril {
+
+void LowRankSolve::clear() {
+  rows_.clear();
+  Z_.resize(0, 0);
+  C_.resize(0, 0);
+}
+
+bool LowRankSolve::set(const Factor& A, const std::vector<int>& rows, const Eigen::MatrixXd& delta) {
+  const Eigen::Index n = A.rows(), k = Eigen::Index(rows.size()), had = Eigen::Index(rows_.size());
+  // Columns of Z for the rows seen before stay: A (the base factor) did not change.
+  Z_.conservativeResize(n, k);
+  Eigen::VectorXd e(n);
+  for (Eigen::Index c = had; c < k; ++c) {
+    e.setZero();
+    e[rows[c]] = 1;
+    Z_.col(c) = A.solve(e);
+  }
+  rows_ = rows;
+  C_ = delta;
+  Eigen::MatrixXd S(k, k);
+  for (Eigen::Index r = 0; r < k; ++r) S.row(r) = Z_.row(rows_[r]);
+  Eigen::MatrixXd K = Eigen::MatrixXd::Identity(k, k) + S * C_;
+  K_.compute(K);
+  // A positive determinant is necessary for A + D to stay positive definite;
+  // a small rcond means the correction would lose the digits a fresh
+  // factorisation keeps.
+  const double det = K_.determinant();
+  return std::isfinite(det) && det > 0 && K_.rcond() > 1e-10;
+}
+
+void LowRankSolve::solve(const Factor& A, Eigen::VectorXd& b) const {
+  b = A.solve(b);
+  if (rows_.empty()) return;
+  yT_.resize(Eigen::Index(rows_.size()));
+  for (std::size_t r = 0; r < rows_.size(); ++r) yT_[Eigen::Index(r)] = b[rows_[r]];
+  const Eigen::VectorXd w = C_ * K_.solve(yT_);
+  b.noalias() -= Z_ * w;
+}
+
+}  // namespace tendril
