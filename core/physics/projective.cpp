@@ -15,15 +15,16 @@ namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
-// Adds w c c^T over the particles ps (coefficients c) to the rows of one axis.
-template <int N>
-void add_term(Triplets& t, const std::vector<int>& row, const ParticleId (&ps)[N], const double (&c)[N], double w) {
+// Adds w c c^T over the particles ps (coefficients c) to the rows of one
+// axis, entry by entry through add(row, column, value).
+template <int N, class Add>
+void add_term(Add& add, const std::vector<int>& row, const ParticleId (&ps)[N], const double (&c)[N], double w) {
   for (int a = 0; a < N; ++a) {
     const int ra = row[ps[a]];
     if (ra < 0) continue;
     for (int b = 0; b < N; ++b) {
       const int rb = row[ps[b]];
-      if (rb >= 0) t.emplace_back(ra, rb, w * c[a] * c[b]);
+      if (rb >= 0) add(ra, rb, w * c[a] * c[b]);
     }
   }
 }
@@ -42,14 +43,13 @@ std::array<std::vector<int>, 3> ProjectiveSystem::rows_of(const Model& m, std::a
   return row;
 }
 
-Eigen::SparseMatrix<double> ProjectiveSystem::assemble(const Model& m, const std::vector<int>& row, int rows,
-                                                       const Vec3* x, double inv_dt2,
-                                                       const std::vector<double>& diagonal) const {
+template <class Add>
+void ProjectiveSystem::terms(const Model& m, const std::vector<int>& row, const Vec3* x, double inv_dt2,
+                             const std::vector<double>& diagonal, Add&& t) const {
   const Particles& P = m.particles;
   const double gf = key_.geometric_factor;
-  Triplets t;
   for (ParticleId p : P.integrated.raw())
-    if (row[p] >= 0) t.emplace_back(row[p], row[p], mass_[p] * inv_dt2 + diagonal[p]);
+    if (row[p] >= 0) t(row[p], row[p], mass_[p] * inv_dt2 + diagonal[p]);
   for (const Bar* bp = m.bars.awake_begin(); bp != m.bars.awake_end(); ++bp) {  // dormant ones never act
     const Bar& b = *bp;
     const double l = (x[b.j] - x[b.i]).norm(), k = b.EA / b.rest_length;
@@ -86,8 +86,16 @@ Eigen::SparseMatrix<double> ProjectiveSystem::assemble(const Model& m, const std
     if (!m.joint_neighbours(jt.particle, nb)) continue;
     for (ParticleId q : nb) add_term<2>(t, row, {jt.particle, q}, {-1, 1}, jt.stiffness);
   }
+}
+
+Eigen::SparseMatrix<double> ProjectiveSystem::assemble(const Model& m, const std::vector<int>& row, int rows,
+                                                       const Vec3* x, double inv_dt2,
+                                                       const std::vector<double>& diagonal) const {
+  Triplets t;
+  t.reserve(m.particles.integrated.size() + 4 * m.bars.size() + 9 * m.hinges.size() + 4 * m.beam6s.size());
+  terms(m, row, x, inv_dt2, diagonal, [&](int r, int c, double v) { t.emplace_back(r, c, v); });
   Eigen::SparseMatrix<double> A(rows, rows);
-  A.setFromTriplets(t.begin(), t.end());
+  A.setFromTriplets(t.begin(), t.end());  // duplicates summed in the order of terms()
   return A;
 }
 
@@ -119,7 +127,7 @@ void ProjectiveSystem::factor(const Key& key, std::uint64_t revision, const Mode
   for (int a = 0; a < 3; ++a) {
     int same = -1;
     for (int b = 0; b < a && same < 0; ++b)
-      if (row[b] == row[a]) same = b;
+      if (axis_[b]->row == row[a]) same = b;
     if (same >= 0) {
       axis_[a] = axis_[same];
       continue;
@@ -151,37 +159,51 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
     for (int b = 0; b < a; ++b) shared |= axis_[b] == axis_[a];
     if (shared) continue;
     Axis& s = *axis_[a];
-    Eigen::SparseMatrix<double> A = assemble(m, s.row, count[a], reference_.data(), inv_dt2, diagonal);
-    const Eigen::SparseMatrix<double> D = A - s.A;
-    // Changed rows: unchanged elements add the same terms in the same order
-    // at the same positions, so their entries repeat bit for bit; the
-    // threshold only forgives a sum taken in another order (elements moved
-    // in their arrays).
-    const Eigen::VectorXd diag = A.diagonal().cwiseAbs();
-    std::vector<char> in(std::size_t(A.rows()), 0);
+    // The new matrix minus the old, D: the terms again at the same positions,
+    // summed into the old pattern in the order assemble() sums them, so that
+    // an unchanged entry repeats bit for bit; entries outside it (a new
+    // cable) apart. Cheaper than assembling and subtracting (no sort).
+    const Eigen::SparseMatrix<double>& A0 = s.A;
+    const int* outer = A0.outerIndexPtr();
+    const int* inner = A0.innerIndexPtr();
+    std::vector<double> d(std::size_t(A0.nonZeros()), 0.0);
+    Triplets extra;
+    terms(m, s.row, reference_.data(), inv_dt2, diagonal, [&](int r, int c, double v) {
+      const int *begin = inner + outer[c], *end = inner + outer[c + 1], *at = std::lower_bound(begin, end, r);
+      if (at != end && *at == r) d[std::size_t(at - inner)] += v;
+      else extra.emplace_back(r, c, v);
+    });
+    const double* old = A0.valuePtr();
+    for (std::size_t i = 0; i < d.size(); ++i) d[i] -= old[i];
+    // Changed rows: the threshold only forgives a sum taken in another order
+    // (elements moved in their arrays).
+    const Eigen::VectorXd diag = A0.diagonal().cwiseAbs();
+    auto significant = [&](int r, int c, double v) { return std::abs(v) > 1e-13 * std::sqrt(diag[r] * diag[c]); };
+    std::vector<char> in(std::size_t(A0.rows()), 0), fresh(std::size_t(A0.rows()), 0);
     for (int r : s.changed) in[std::size_t(r)] = 1;
-    std::vector<char> fresh(std::size_t(A.rows()), 0);
-    for (Eigen::Index c = 0; c < D.outerSize(); ++c)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(D, c); it; ++it)
-        if (std::abs(it.value()) > 1e-13 * std::sqrt(diag[it.row()] * diag[c])) {
-          fresh[std::size_t(it.row())] = 1;
-          fresh[std::size_t(c)] = 1;
-        }
+    for (Eigen::Index c = 0; c < A0.outerSize(); ++c)
+      for (int i = outer[c]; i < outer[c + 1]; ++i)
+        if (significant(inner[i], int(c), d[std::size_t(i)])) fresh[std::size_t(inner[i])] = fresh[std::size_t(c)] = 1;
+    for (const auto& e : extra)
+      if (significant(e.row(), e.col(), e.value())) fresh[std::size_t(e.row())] = fresh[std::size_t(e.col())] = 1;
     for (std::size_t r = 0; r < fresh.size(); ++r)
       if (fresh[r] && !in[r]) s.changed.push_back(int(r));
     if (s.changed.size() > s.budget) return false;
     if (low_rank) {
       const Eigen::Index k = Eigen::Index(s.changed.size());
       Eigen::MatrixXd C = Eigen::MatrixXd::Zero(k, k);
-      std::vector<int> place(std::size_t(A.rows()), -1);
+      std::vector<int> place(std::size_t(A0.rows()), -1);
       for (Eigen::Index i = 0; i < k; ++i) place[std::size_t(s.changed[std::size_t(i)])] = int(i);
       for (int r : s.changed)
-        for (Eigen::SparseMatrix<double>::InnerIterator it(D, r); it; ++it)  // symmetric: column r is row r
-          if (place[std::size_t(it.row())] >= 0) C(place[std::size_t(it.row())], place[std::size_t(r)]) = it.value();
+        for (int i = outer[r]; i < outer[r + 1]; ++i)  // symmetric: column r is row r
+          if (place[std::size_t(inner[i])] >= 0) C(place[std::size_t(inner[i])], place[std::size_t(r)]) = d[std::size_t(i)];
+      for (const auto& e : extra)
+        if (place[std::size_t(e.row())] >= 0 && place[std::size_t(e.col())] >= 0)
+          C(place[std::size_t(e.row())], place[std::size_t(e.col())]) += e.value();
       if (!s.change.set(s.factor, s.changed, C)) return false;
     } else {
       const std::vector<int> changed = s.changed;
-      s.A = std::move(A);
+      s.A = assemble(m, s.row, count[a], reference_.data(), inv_dt2, diagonal);
       factor_axis(s, a);
       s.changed = changed;  // the budget counts from the last factor() in both ways
     }

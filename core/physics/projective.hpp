@@ -91,6 +91,9 @@ class ProjectiveSystem {
     std::size_t budget = 0;        // how many may before factor() pays
     Eigen::VectorXd b;
   };
+  template <class Add>  // every matrix entry's terms, in a fixed order, through add(row, column, value)
+  void terms(const Model& m, const std::vector<int>& row, const Vec3* x, double inv_dt2,
+             const std::vector<double>& diagonal, Add&& add) const;
   Eigen::SparseMatrix<double> assemble(const Model& m, const std::vector<int>& row, int rows, const Vec3* x,
                                        double inv_dt2, const std::vector<double>& diagonal) const;
   void factor_axis(Axis& s, int a);
