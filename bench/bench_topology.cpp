@@ -18,7 +18,7 @@
 // The ratio is (change + step after) / steady step, medians over --reps.
 // Thread CPU time, so that other processes on the machine do not count.
 //
-//   bench_topology [--sizes 16K,100K] [--reps 5] [--integrators leapfrog,projective,...]
+//   bench_topology [--sizes 16384,100000,1M] [--reps 5] [--changes cable,...] [--integrators leapfrog,...]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -174,7 +174,7 @@ std::string ms(double s) { return fmt("%.2f ms", 1e3 * s); }
 int usage(const char* argv0, int code) {
   std::fprintf(code ? stderr : stdout,
                "usage: %s [--sizes 16K,100K] [--reps N] [--changes cable,remove,rest,particle] [--integrators a,b,...]\n"
-               "  --sizes        particle counts (K/M suffixes; the net is the nearest square), e.g. 16K,100K,1M\n"
+               "  --sizes        particle counts (K/M suffixes; the nearest square net; default 16384,100000), e.g. 1M\n"
                "  --reps         changes of each kind per integrator and size (default 5; medians)\n"
                "  --changes      cable, remove, rest, particle (default: all)\n"
                "  --integrators  leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective,\n"
@@ -187,7 +187,7 @@ int usage(const char* argv0, int code) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::size_t> sizes{16384, 100000};
+  std::vector<std::size_t> sizes{16384, 100000};  // 128 x 128 (the 16K) and 316 x 316
   int reps = 5;
   std::vector<Change> changes{Change::Cable, Change::Remove, Change::Rest, Change::Particle};
   std::vector<Variant> variants;
@@ -237,7 +237,7 @@ int main(int argc, char** argv) {
   std::puts("  boundary locked, 1 N in -z on the interior; default settings (mixed: mixed_switch 1, implicit at once)");
   std::puts("  changes: cable = a new cable across a grid cell; remove = one such cable deleted;");
   std::puts("           rest = one such cable's rest length -1 %;");
-  std::puts("           particle = a new particle on a cable (the matrix grows: projective factors again)");
+  std::puts("           particle = a new particle on a cable (the matrix grows by a row per axis)");
   std::printf("  medians of %d changes, thread CPU time; ratio = (change + step after) / steady step\n", reps);
   std::printf("  goal: ratio <= 2 for every integrator (DESIGN principle 1)%s\n\n",
 #ifdef NDEBUG

@@ -11,31 +11,34 @@ void LowRankSolve::clear() {
   C_.resize(0, 0);
 }
 
-bool LowRankSolve::set(const Factor& A, const std::vector<int>& rows, const Eigen::MatrixXd& delta) {
-  const Eigen::Index n = A.rows(), k = Eigen::Index(rows.size()), had = Eigen::Index(rows_.size());
-  // Columns of Z for the rows seen before stay: A (the base factor) did not change.
-  Z_.conservativeResize(n, k);
+bool LowRankSolve::set(const Solve& B, Eigen::Index n, const std::vector<int>& rows, const Eigen::MatrixXd& delta) {
+  const Eigen::Index k = Eigen::Index(rows.size()), had = Eigen::Index(rows_.size());
+  // Columns of Z for the rows seen before stay (B did not change on its old
+  // rows); on rows B gained since they are zero.
+  Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(n, k);
+  Z.topLeftCorner(Z_.rows(), had) = Z_.leftCols(had);
   Eigen::VectorXd e(n);
   for (Eigen::Index c = had; c < k; ++c) {
     e.setZero();
-    e[rows[c]] = 1;
-    Z_.col(c) = A.solve(e);
+    e[rows[std::size_t(c)]] = 1;
+    B(e);
+    Z.col(c) = e;
   }
+  Z_ = std::move(Z);
   rows_ = rows;
   C_ = delta;
   Eigen::MatrixXd S(k, k);
-  for (Eigen::Index r = 0; r < k; ++r) S.row(r) = Z_.row(rows_[r]);
-  Eigen::MatrixXd K = Eigen::MatrixXd::Identity(k, k) + S * C_;
-  K_.compute(K);
-  // A positive determinant is necessary for A + D to stay positive definite;
+  for (Eigen::Index r = 0; r < k; ++r) S.row(r) = Z_.row(rows_[std::size_t(r)]);
+  K_.compute(Eigen::MatrixXd::Identity(k, k) + S * C_);
+  // A positive determinant is necessary for B + D to stay positive definite;
   // a small rcond means the correction would lose the digits a fresh
   // factorisation keeps.
   const double det = K_.determinant();
   return std::isfinite(det) && det > 0 && K_.rcond() > 1e-10;
 }
 
-void LowRankSolve::solve(const Factor& A, Eigen::VectorXd& b) const {
-  b = A.solve(b);
+void LowRankSolve::solve(const Solve& B, Eigen::VectorXd& b) const {
+  B(b);
   if (rows_.empty()) return;
   yT_.resize(Eigen::Index(rows_.size()));
   for (std::size_t r = 0; r < rows_.size(); ++r) yT_[Eigen::Index(r)] = b[rows_[r]];

@@ -1,35 +1,36 @@
 #pragma once
-// Solves (A + D) x = b with the sparse LDL^T factor of A alone, when D is
-// nonzero only on a few rows and columns T (a bar added or removed, a rest
-// length or weight changed, a particle's mass): D = U C U^T, U the columns
-// of the identity at T, C = D[T, T] (dense, k x k, any sign), and
-//   (A + U C U^T)^-1 b = y - Z C (I + S C)^-1 y_T,   y = A^-1 b,
-//   Z = A^-1 U (k solves, once per new row), S = U^T Z = Z[T, :]
+// Solves (B + D) x = b with a solver of B alone, when D is nonzero only on
+// a few rows and columns T (a bar added or removed, a rest length or weight
+// changed, a particle's mass, a new particle's row): D = U C U^T, U the
+// columns of the identity at T, C = D[T, T] (dense, k x k, any sign), and
+//   (B + U C U^T)^-1 b = y - Z C (I + S C)^-1 y_T,   y = B^-1 b,
+//   Z = B^-1 U (k solves, once per new row), S = U^T Z = Z[T, :]
 // (Sherman-Morrison-Woodbury without C^-1, so a singular C - one bar's
 // w (e_i - e_j)(e_i - e_j)^T - is fine). Exact up to rounding: the same
-// solution as a fresh factorisation of A + D, at the price of one solve per
+// solution as a fresh factorisation of B + D, at the price of one solve per
 // new row once and 2 n k flops per solve after (projective.hpp decides when
-// a refactorisation pays off instead).
+// a refactorisation pays off instead). B may grow by rows that it solves
+// apart from the others (a block diagonal extension: B^-1 e_r is zero on
+// rows added later, so the columns of Z kept stay right).
 #include <Eigen/Dense>
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
+#include <functional>
 #include <vector>
 
 namespace tendril {
 
 class LowRankSolve {
  public:
-  using Factor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
-  // Forgets every change: solves with A's factor alone.
+  using Solve = std::function<void(Eigen::VectorXd&)>;  // b -> B^-1 b, in place
+  // Forgets every change: solves with B alone.
   void clear();
-  // The change D is now `delta` (dense over rows(), in their order) on the
-  // rows `rows`, which extend rows() (rows already there keep their place).
-  // False when I + S C is singular or its determinant, det(A + D) / det(A),
-  // not positive: A + D is not positive definite (or nearly not), so the
-  // caller refactors, which says why.
-  bool set(const Factor& A, const std::vector<int>& rows, const Eigen::MatrixXd& delta);
-  // b -> (A + D)^-1 b, in place.
-  void solve(const Factor& A, Eigen::VectorXd& b) const;
+  // The change D is now `delta` (dense over `rows`, in their order) on the
+  // rows `rows`, which extend rows() (rows already there keep their place),
+  // and B has n rows. False when I + S C is singular or its determinant,
+  // det(B + D) / det(B), not positive: B + D is not positive definite (or
+  // nearly not), so the caller refactors, which says why.
+  bool set(const Solve& B, Eigen::Index n, const std::vector<int>& rows, const Eigen::MatrixXd& delta);
+  // b -> (B + D)^-1 b, in place.
+  void solve(const Solve& B, Eigen::VectorXd& b) const;
   const std::vector<int>& rows() const { return rows_; }
 
  private:

@@ -106,6 +106,7 @@ void ProjectiveSystem::factor_axis(Axis& s, int a) {
                          " is not positive definite (a free particle without mass or stiffness?)");
   s.change.clear();
   s.changed.clear();
+  s.grown.resize(0);
   // A changed row costs 2 n flops per solve on top of the triangular solves'
   // 4 nnz(L): beyond nnz(L) / n rows a factorisation pays (and Z, n per row,
   // would outgrow L). At least 16, so that small models refactor rarely too.
@@ -122,6 +123,8 @@ void ProjectiveSystem::factor(const Key& key, std::uint64_t revision, const Mode
   const std::size_t n = m.particles.capacity();
   reference_.assign(x, x + n);
   mass_.assign(mass.begin(), mass.end());
+  known_.assign(n, 0);
+  for (ParticleId p : m.particles.integrated.raw()) known_[p] = 1;
   std::array<int, 3> count{};
   std::array<std::vector<int>, 3> row = rows_of(m, count);
   for (int a = 0; a < 3; ++a) {
@@ -143,67 +146,103 @@ void ProjectiveSystem::factor(const Key& key, std::uint64_t revision, const Mode
   ++factorizations_;
 }
 
-bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Model& m,
+bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Model& m, const Vec3* x,
                               const std::vector<double>& mass, bool follow_mass, double inv_dt2,
                               const std::vector<double>& diagonal) {
-  if (!factored_ || !(key_ == key)) return false;
+  const std::size_t n = m.particles.capacity(), had = reference_.size();
+  if (!factored_ || !(key_ == key) || n < had) return false;
   std::array<int, 3> count{};
-  const std::array<std::vector<int>, 3> row = rows_of(m, count);
-  for (int a = 0; a < 3; ++a)
-    if (row[a] != axis_[a]->row) return false;
+  std::array<std::vector<int>, 3> row = rows_of(m, count);
+  // Every row stays where it was; new ones (particles added, or integrated
+  // again) come after them, which the particles' `integrated` order gives.
+  for (int a = 0; a < 3; ++a) {
+    const std::vector<int>& old = axis_[a]->row;
+    for (std::size_t p = 0; p < had; ++p)
+      if (old[p] >= 0 && row[a][p] != old[p]) return false;
+    for (int b = 0; b < a; ++b)
+      if ((axis_[b] == axis_[a]) != (row[b] == row[a])) return false;
+  }
   factored_ = false;  // until every axis follows
-  if (follow_mass)
-    for (ParticleId p : m.particles.integrated.raw()) mass_[p] = mass[p];
+  // New particles: their reference is where they are, their mass this step's.
+  reference_.insert(reference_.end(), x + had, x + n);
+  mass_.resize(n, 0.0);
+  known_.resize(n, 0);
+  for (ParticleId p : m.particles.integrated.raw())
+    if (follow_mass || !known_[p]) {
+      mass_[p] = mass[p];
+      known_[p] = 1;
+    }
   for (int a = 0; a < 3; ++a) {
     bool shared = false;  // with an axis done already
     for (int b = 0; b < a; ++b) shared |= axis_[b] == axis_[a];
     if (shared) continue;
     Axis& s = *axis_[a];
-    // The new matrix minus the old, D: the terms again at the same positions,
-    // summed into the old pattern in the order assemble() sums them, so that
-    // an unchanged entry repeats bit for bit; entries outside it (a new
-    // cable) apart. Cheaper than assembling and subtracting (no sort).
+    s.row = std::move(row[a]);
+    // The new matrix minus the base (the old one, and the diagonal of rows
+    // added since), D: the terms again at the same positions, summed into
+    // the old pattern in the order assemble() sums them, so that an
+    // unchanged entry repeats bit for bit; entries outside it (a new cable,
+    // a new row) apart. Cheaper than assembling and subtracting (no sort).
     const Eigen::SparseMatrix<double>& A0 = s.A;
+    const int n0 = int(A0.rows()), rows = count[a], grown = int(s.grown.size());
     const int* outer = A0.outerIndexPtr();
     const int* inner = A0.innerIndexPtr();
-    std::vector<double> d(std::size_t(A0.nonZeros()), 0.0);
+    std::vector<double> d(std::size_t(A0.nonZeros()), 0.0), new_diagonal(std::size_t(rows - n0), 0.0);
     Triplets extra;
     terms(m, s.row, reference_.data(), inv_dt2, diagonal, [&](int r, int c, double v) {
+      if (r >= n0 || c >= n0) {
+        if (r == c) new_diagonal[std::size_t(r - n0)] += v;
+        else extra.emplace_back(r, c, v);
+        return;
+      }
       const int *begin = inner + outer[c], *end = inner + outer[c + 1], *at = std::lower_bound(begin, end, r);
       if (at != end && *at == r) d[std::size_t(at - inner)] += v;
       else extra.emplace_back(r, c, v);
     });
     const double* old = A0.valuePtr();
     for (std::size_t i = 0; i < d.size(); ++i) d[i] -= old[i];
+    // Rows new in this update enter the base with their diagonal (so that
+    // it stays positive definite); every row added since is a changed one.
+    s.grown.conservativeResize(rows - n0);
+    for (int r = grown; r < rows - n0; ++r) s.grown[r] = new_diagonal[std::size_t(r)];
+    for (int r = 0; r < rows - n0; ++r) new_diagonal[std::size_t(r)] -= s.grown[r];
     // Changed rows: the threshold only forgives a sum taken in another order
     // (elements moved in their arrays).
-    const Eigen::VectorXd diag = A0.diagonal().cwiseAbs();
-    auto significant = [&](int r, int c, double v) { return std::abs(v) > 1e-13 * std::sqrt(diag[r] * diag[c]); };
-    std::vector<char> in(std::size_t(A0.rows()), 0), fresh(std::size_t(A0.rows()), 0);
+    Eigen::VectorXd scale(rows);
+    scale << A0.diagonal().cwiseAbs(), s.grown.cwiseAbs();
+    auto significant = [&](int r, int c, double v) { return std::abs(v) > 1e-13 * std::sqrt(scale[r] * scale[c]); };
+    std::vector<char> in(std::size_t(rows), 0), fresh(std::size_t(rows), 0);
     for (int r : s.changed) in[std::size_t(r)] = 1;
-    for (Eigen::Index c = 0; c < A0.outerSize(); ++c)
+    for (int c = 0; c < n0; ++c)
       for (int i = outer[c]; i < outer[c + 1]; ++i)
-        if (significant(inner[i], int(c), d[std::size_t(i)])) fresh[std::size_t(inner[i])] = fresh[std::size_t(c)] = 1;
+        if (significant(inner[i], c, d[std::size_t(i)])) fresh[std::size_t(inner[i])] = fresh[std::size_t(c)] = 1;
     for (const auto& e : extra)
       if (significant(e.row(), e.col(), e.value())) fresh[std::size_t(e.row())] = fresh[std::size_t(e.col())] = 1;
+    for (int r = n0; r < rows; ++r) fresh[std::size_t(r)] = 1;
     for (std::size_t r = 0; r < fresh.size(); ++r)
       if (fresh[r] && !in[r]) s.changed.push_back(int(r));
     if (s.changed.size() > s.budget) return false;
+    s.b.resize(rows);
     if (low_rank) {
       const Eigen::Index k = Eigen::Index(s.changed.size());
       Eigen::MatrixXd C = Eigen::MatrixXd::Zero(k, k);
-      std::vector<int> place(std::size_t(A0.rows()), -1);
+      std::vector<int> place(std::size_t(rows), -1);
       for (Eigen::Index i = 0; i < k; ++i) place[std::size_t(s.changed[std::size_t(i)])] = int(i);
-      for (int r : s.changed)
+      for (int r : s.changed) {
+        if (r >= n0) {
+          C(place[std::size_t(r)], place[std::size_t(r)]) = new_diagonal[std::size_t(r - n0)];
+          continue;
+        }
         for (int i = outer[r]; i < outer[r + 1]; ++i)  // symmetric: column r is row r
           if (place[std::size_t(inner[i])] >= 0) C(place[std::size_t(inner[i])], place[std::size_t(r)]) = d[std::size_t(i)];
+      }
       for (const auto& e : extra)
         if (place[std::size_t(e.row())] >= 0 && place[std::size_t(e.col())] >= 0)
           C(place[std::size_t(e.row())], place[std::size_t(e.col())]) += e.value();
-      if (!s.change.set(s.factor, s.changed, C)) return false;
+      if (!s.change.set([&s](Eigen::VectorXd& b) { s.base_solve(b); }, rows, s.changed, C)) return false;
     } else {
       const std::vector<int> changed = s.changed;
-      s.A = assemble(m, s.row, count[a], reference_.data(), inv_dt2, diagonal);
+      s.A = assemble(m, s.row, rows, reference_.data(), inv_dt2, diagonal);
       factor_axis(s, a);
       s.changed = changed;  // the budget counts from the last factor() in both ways
     }
@@ -214,6 +253,17 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
   return true;
 }
 
+void ProjectiveSystem::Axis::base_solve(Eigen::VectorXd& b) const {
+  const Eigen::Index n0 = A.rows();
+  if (grown.size() == 0) {
+    b = factor.solve(b);
+    return;
+  }
+  Eigen::VectorXd head = factor.solve(b.head(n0));
+  b.head(n0) = head;
+  b.tail(grown.size()).array() /= grown.array();
+}
+
 void ProjectiveSystem::solve(const Model& m, Vec3* rhs) {
   const std::vector<ParticleId>& integrated = m.particles.integrated.raw();
   for (int a = 0; a < 3; ++a) {
@@ -221,7 +271,7 @@ void ProjectiveSystem::solve(const Model& m, Vec3* rhs) {
     const std::vector<int>& row = s.row;
     for (ParticleId p : integrated)
       if (row[p] >= 0) s.b[row[p]] = rhs[p][a];
-    if (s.b.size() != 0) s.change.solve(s.factor, s.b);
+    if (s.b.size() != 0) s.change.solve([&s](Eigen::VectorXd& b) { s.base_solve(b); }, s.b);
     for (ParticleId p : integrated) rhs[p][a] = row[p] >= 0 ? s.b[row[p]] : 0.0;
   }
 }
@@ -236,9 +286,9 @@ void Solver::integrate_projective() {
   const std::vector<ParticleId>& integrated = P.integrated.raw();
   if (!projective_) projective_ = std::make_shared<ProjectiveSystem>();
   projective_->low_rank = projective_low_rank_;
-  const ProjectiveSystem::Key key{&model_, n, settings.dt, dt, settings.mass_factor, settings.geometric_factor,
+  const ProjectiveSystem::Key key{&model_, settings.dt, dt, settings.mass_factor, settings.geometric_factor,
                                   int(settings.mass_mode)};
-  if (!projective_->current(key, model_.revision)) {
+  if (!projective_->current(key, model_.revision, n)) {
     std::vector<double> diagonal(n, 0.0);
     auto cst_diagonal = [&](const Vec3* x) {
       if (model_.csts.items.empty()) return;
@@ -250,9 +300,14 @@ void Solver::integrate_projective() {
     // physical ones are the model's and followed.
     const bool physical = settings.mass_mode == MassMode::Physical;
     bool followed = false;
-    if (projective_->reference().size() == n) {
-      cst_diagonal(projective_->reference().data());
-      followed = projective_->update(key, model_.revision, model_, mass_, physical, inv_dt2, diagonal);
+    if (projective_->reference().size() <= n) {
+      // CST at the reference positions (new particles' are their own: the
+      // reference grows first, so that the update sees what it assembles).
+      std::vector<Vec3> reference(P.position.begin(), P.position.end());
+      std::copy(projective_->reference().begin(), projective_->reference().end(), reference.begin());
+      cst_diagonal(reference.data());
+      followed = projective_->update(key, model_.revision, model_, P.position.data(), mass_, physical, inv_dt2,
+                                     diagonal);
     }
     if (!followed) {
       std::fill(diagonal.begin(), diagonal.end(), 0.0);

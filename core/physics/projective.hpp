@@ -20,15 +20,17 @@
 //   goals           the weight on the particle's diagonal (anchor, plane,
 //                   line) or on the edge (length).
 // A topology or parameter change (the model's revision moves) is followed
-// locally when the particles and their locks stay: the matrix is assembled
-// again at the same reference positions, so only the changed elements'
-// rows differ, and the old factor solves the new matrix exactly through a
+// locally while every particle's row stays: the matrix is assembled again
+// at the same reference positions, so only the changed elements' rows
+// differ, and the old factor solves the new matrix exactly through a
 // low-rank correction (low_rank_solve.hpp) - a new cable costs two solves,
-// not a factorisation. Fictitious masses stay those of the factorisation;
-// physical ones are followed. A full factorisation at the current positions
-// comes when a particle, a lock, dt or the mass mode changes, or when the
-// changed rows since the last one exceed nnz(L) / n, where the correction
-// would cost more per solve than the triangular solves themselves.
+// not a factorisation. New particles' rows come after the others and join
+// the correction. Fictitious masses stay those of the factorisation (a new
+// particle's its first); physical ones are followed. A full factorisation
+// at the current positions comes when a lock, dt or the mass mode changes,
+// a particle leaves (the rows after it move), or the changed rows since the
+// last one exceed nnz(L) / n, where the correction would cost more per
+// solve than the triangular solves themselves.
 // A fixed point is an equilibrium whatever the weights: they only decide how
 // fast the iterations get there.
 #include <Eigen/SparseCholesky>
@@ -48,13 +50,12 @@ class ProjectiveSystem {
   // refactors.
   struct Key {
     const Model* model = nullptr;
-    std::size_t capacity = 0;
     double dt = 0, step_dt = 0, mass_factor = 0, geometric_factor = 0;
     int mass_mode = 0;
     bool operator==(const Key&) const = default;
   };
-  bool current(const Key& k, std::uint64_t revision) const {
-    return factored_ && key_ == k && revision_ == revision;
+  bool current(const Key& k, std::uint64_t revision, std::size_t capacity) const {
+    return factored_ && key_ == k && revision_ == revision && reference_.size() == capacity;
   }
   // Assembles M/dt^2 + L at positions x, with `mass` (frozen with the factor,
   // mass()) and `diagonal` extra per-particle weights (CST), and factors it.
@@ -64,11 +65,12 @@ class ProjectiveSystem {
   // Follows a change of the model (same key) locally: assembles at
   // reference() with mass() - where `follow_mass` (physical masses) the
   // particles whose `mass` changed take it - and `diagonal` (CST at
-  // reference()). False when it needs factor(): another key, other rows,
+  // reference()). New particles (after the old ones in every axis' rows)
+  // take their position x and `mass` into reference() and mass(). False when it needs factor(): another key, other rows,
   // too many changed rows, or a matrix the correction would not keep
   // positive definite.
-  bool update(const Key& key, std::uint64_t revision, const Model& m, const std::vector<double>& mass, bool follow_mass,
-              double inv_dt2, const std::vector<double>& diagonal);
+  bool update(const Key& key, std::uint64_t revision, const Model& m, const Vec3* x, const std::vector<double>& mass,
+              bool follow_mass, double inv_dt2, const std::vector<double>& diagonal);
   // dx for the free coordinates of every particle: rhs -> increments, in place.
   void solve(const Model& m, Vec3* rhs);
   const std::vector<Vec3>& reference() const { return reference_; }  // x of the last factor()
@@ -86,7 +88,9 @@ class ProjectiveSystem {
     std::vector<int> row;          // particle -> row, or -1 (fixed)
     Eigen::SparseMatrix<double> A;  // what `factor` factors
     Factor factor;
-    LowRankSolve change;           // A + change: the current matrix
+    Eigen::VectorXd grown;         // rows added since factor(): their diagonal
+    LowRankSolve change;           // diag(A, grown) + change: the current matrix
+    void base_solve(Eigen::VectorXd& b) const;  // diag(A, grown)^-1 b
     std::vector<int> changed;      // rows changed since factor(), in order
     std::size_t budget = 0;        // how many may before factor() pays
     Eigen::VectorXd b;
@@ -105,6 +109,7 @@ class ProjectiveSystem {
   std::array<std::shared_ptr<Axis>, 3> axis_;
   std::vector<Vec3> reference_;
   std::vector<double> mass_;
+  std::vector<std::uint8_t> known_;  // integrated at factor() or an update: mass_ holds its mass
 };
 
 }  // namespace tendril
