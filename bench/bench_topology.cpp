@@ -9,12 +9,16 @@
 //
 // Each model first steps until it is warm (the projective factorisation
 // done), then alternates: a few steady steps (timed: the median is the
-// steady step), one change (timed) and the step after it (timed). Changes:
+// steady step), one change (timed) and the step after it (timed). Changes
+// (the net carries a few cables across cells for the second and third: its
+// bars are a patch's, which no rule shortens one at a time):
 //   cable     a new cable across a grid cell between two existing interior
 //             particles (rule 6);
-//   rest      one bar's rest length 1 % shorter;
+//   remove    one of those cables deleted (rule 7);
+//   rest      one cable's rest length 1 % shorter;
 //   particle  a new particle hung by a cable under an interior one (the
-//             matrix grows: projective dynamics factors again, said so).
+//             matrix grows by a row per axis).
+// projective_refactor factors every change afresh: the cost before.
 // The ratio is (change + step after) / steady step, medians over --reps.
 // Thread CPU time, so that other processes on the machine do not count.
 //
