@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the benchmarks (Release, in ./build) and runs them, printing tables.
 #
-#   bench/run.sh [throughput|rule_cost|meshing|constraint_solvers|net|topology] [options...]
+#   bench/run.sh [throughput|rule_cost|meshing|constraint_solvers|net|topology|low_rank] [options...]
 #   bench/run.sh sweep [RUNS]
 #   bench/run.sh fe [--param case=strip|ring|ring-p|net|frame] (tendril against CalculiX, bench/fe/fe.lua)
 #   bench/run.sh hybrids   (textile hybrids with every integrator, bench/hybrids.lua)
@@ -18,7 +18,9 @@
 # on the issue-18 net (bench/bench_net.cpp).
 # `topology` (only when asked for) times one rule application and the step
 # after it against a steady step, every integrator, on the same net
-# (bench/bench_topology.cpp; e.g. `bench/run.sh topology --sizes 16K,100K,1M`).
+# (bench/bench_topology.cpp; e.g. `bench/run.sh topology --sizes 16384,100000,1M`);
+# `low_rank` why that change is followed by a Woodbury correction and not
+# by conjugate gradients on the old factor (bench/bench_low_rank.cpp).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -62,7 +64,7 @@ case "${1:-}" in
     sweep=1
     shift
     ;;
-  throughput | rule_cost | meshing | constraint_solvers | net | topology)
+  throughput | rule_cost | meshing | constraint_solvers | net | topology | low_rank)
     benches=("$1")
     selected=1
     shift
