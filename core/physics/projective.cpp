@@ -170,6 +170,7 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
   for (ParticleId p : m.particles.integrated.raw())
     if (follow_mass || !known_[p]) {
       mass_[p] = mass[p];
+      if (!known_[p]) reference_[p] = x[p];  // a slot reused since: not its old particle's place
       known_[p] = 1;
     }
   for (int a = 0; a < 3; ++a) {
@@ -304,7 +305,9 @@ void Solver::integrate_projective() {
       // CST at the reference positions (new particles' are their own: the
       // reference grows first, so that the update sees what it assembles).
       std::vector<Vec3> reference(P.position.begin(), P.position.end());
-      std::copy(projective_->reference().begin(), projective_->reference().end(), reference.begin());
+      const std::vector<Vec3>& old = projective_->reference();
+      for (std::size_t p = 0; p < old.size(); ++p)
+        if (projective_->known(ParticleId(p))) reference[p] = old[p];
       cst_diagonal(reference.data());
       followed = projective_->update(key, model_.revision, model_, P.position.data(), mass_, physical, inv_dt2,
                                      diagonal);

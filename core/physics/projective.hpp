@@ -75,6 +75,9 @@ class ProjectiveSystem {
   void solve(const Model& m, Vec3* rhs);
   const std::vector<Vec3>& reference() const { return reference_; }  // x of the last factor()
   const std::vector<double>& mass() const { return mass_; }
+  // Whether p was integrated at factor() or an update: reference() and
+  // mass() hold its place and mass.
+  bool known(ParticleId p) const { return p < known_.size() && known_[p]; }
   std::uint64_t factorizations() const { return factorizations_; }
   std::uint64_t updates() const { return updates_; }
   // Off: update() factors the updated matrix afresh instead of correcting
