@@ -79,6 +79,20 @@ void declare_solver(std::vector<Command>& out) {
                 }};
   steps.lua = "";  // m:step and m:run drive the solver from Lua
   out.push_back(std::move(steps));
+  // A step that threw may still have changed the model (velocities reset,
+  // forces of the positions it started from): the journal says where one
+  // failed, and a replay takes that step again, which fails the same way.
+  Command failed_step{"failed_step", "a solver step that failed (threw) when the journal was written; it must fail again",
+                      Effect::Steps, {}, Returns::Nothing, [](Target& t, Args&) {
+                        try {
+                          t.solver.step();
+                        } catch (const std::exception&) {
+                          return nothing();
+                        }
+                        throw ModelError("failed_step: the step succeeded here (this is not the model the journal failed a step of)");
+                      }};
+  failed_step.lua = "";
+  out.push_back(std::move(failed_step));
   Command open{"open", "a model database (XML) to start from", Effect::Topology,
                {{"path", Type::Path, "the file"}}, Returns::Nothing, [](Target& t, Args& a) {
                  load_model_xml(a[0].word, t.model, t.solver.settings);

@@ -485,12 +485,13 @@ json Session::cmd_lock(lua_State* L, const json& c) {
 
 // Any command of docs/commands.md in its JSON form, checked and journaled
 // by the command layer like a scene's call. Not `open` (a page names no
-// file on the server) nor `steps` (the step command paces the solver).
+// file on the server) nor `steps` and `failed_step` (the step command paces the solver).
 json Session::cmd_apply(lua_State* L, const json& c) {
   const auto [declared, args] =
       command::from_json({{"command", c.value("command", json())}, {"args", c.value("args", json::object())}});
   const std::string name = declared->name;
-  if (name == "open" || name == "steps") return refused("apply: '" + name + "' is not for the page (use step, or --out files)");
+  if (name == "open" || declared->effect == command::Effect::Steps)
+    return refused("apply: '" + name + "' is not for the page (use step, or --out files)");
   const command::Result r = command::apply(scene_of(L, model_ref_).session, *declared, args);
   converged_ = false;
   return ok(command::result_json(r));
@@ -614,10 +615,14 @@ json Session::cmd_branch(lua_State* L, const json& c) {
     p = point_of(s, "branch");
     p.mark.lines = prods[std::size_t(index) - 1] + 1;
     std::uint64_t steps = 0;
+    std::size_t failures = 0;
     const std::vector<std::string> lines = s.trace.lines(s.solver);
-    for (std::size_t k = 0; k < p.mark.lines; ++k)
+    for (std::size_t k = 0; k < p.mark.lines; ++k) {
       if (lines[k].rfind("steps ", 0) == 0) steps += std::stoull(lines[k].substr(6));
+      failures += lines[k] == "failed_step";
+    }
     p.mark.steps = p.steps = steps;
+    p.mark.failures = p.failures = failures;
     std::size_t entries = 0;  // assembly entries made at or before that step
     while (entries < s.journal.entries.size() && s.journal.entries[entries].step <= steps) ++entries;
     p.journal = entries;

@@ -8,17 +8,17 @@
 namespace tendril::studio {
 
 JournalPoint point_of(const lua::Scene& s, std::string label) {
-  return {s.trace.mark(), s.journal.entries.size(), s.solver.steps(), s.solver.residual(), std::move(label)};
+  return {s.trace.mark(), s.journal.entries.size(), s.solver.steps(), s.solver.residual(), std::move(label),
+          s.solver.failed_steps().size()};
 }
 
 std::vector<std::string> lines_up_to(const lua::Scene& s, const JournalPoint& p) {
-  std::vector<std::string> lines = s.trace.lines(s.solver);
-  lines.resize(p.mark.lines);
-  if (p.steps > p.mark.steps) lines.push_back("steps " + std::to_string(p.steps - p.mark.steps));
-  return lines;
+  return s.trace.lines_until(s.solver, p.mark, p.steps, p.failures);
 }
 
-bool is_production(const std::string& line) { return line.rfind("steps ", 0) != 0 && line.rfind("#", 0) != 0; }
+bool is_production(const std::string& line) {
+  return line.rfind("steps ", 0) != 0 && line != "failed_step" && line.rfind("#", 0) != 0;
+}
 
 std::vector<std::size_t> productions(const lua::Scene& s) {
   std::vector<std::size_t> out;

@@ -17,12 +17,14 @@ struct JournalPoint {
   std::uint64_t steps = 0;   // solver steps (may lie after the mark's last line)
   double residual = 0;
   std::string label;
+  std::size_t failures = 0;  // failed solver steps (Solver::failed_steps) up to here
 };
 
 JournalPoint point_of(const lua::Scene& s, std::string label);
 // The trace up to p (the steps after its last line included).
 std::vector<std::string> lines_up_to(const lua::Scene& s, const JournalPoint& p);
-// The operation lines of the trace (everything but "steps" and comments):
+// The operation lines of the trace (everything but "steps", "failed_step"
+// and comments):
 // production k of the timeline is the k-th of them (1-based; 0 is empty).
 std::vector<std::size_t> productions(const lua::Scene& s);
 bool is_production(const std::string& trace_line);

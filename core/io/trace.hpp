@@ -13,7 +13,8 @@
 //   section6 B GJ EIy EIz   formulation B 3|6   orientation P W X Y Z
 //   formulation B bars | form SW SF A B C ... | analysis SW SF DXX DXY DYX DYY G A B C ...
 //     (a patch: bars, or CST triangles A B C with A-B along the warp)
-//   torque P X Y Z   steps N   open PATH (a model database)   # comment
+//   torque P X Y Z   steps N   failed_step (a step that threw: replayed, it
+//   must fail the same way)   open PATH (a model database)   # comment
 // Each line is a command of command/ (docs/commands.md lists their forms);
 // command/replay.hpp replays a trace.
 #include <iosfwd>
@@ -34,14 +35,20 @@ class Trace {
   struct Mark {
     std::size_t lines;
     std::uint64_t steps;
+    std::size_t failures;
   };
-  Mark mark() const { return {lines_.size(), traced_steps_}; }
+  Mark mark() const { return {lines_.size(), traced_steps_, traced_failures_}; }
   void rewind(Mark m) {
     lines_.resize(m.lines);
     traced_steps_ = m.steps;
+    traced_failures_ = m.failures;
   }
-  // All lines, with the steps still pending at `s`.
+  // All lines, with the steps (and failed steps) still pending at `s`.
   std::vector<std::string> lines(const Solver& s) const;
+  // The lines up to mark m, then what `s` did after it up to its `steps`-th
+  // step and its `failures`-th failed step: a place in a session that lies
+  // after the mark's last line (the studio's timeline).
+  std::vector<std::string> lines_until(const Solver& s, Mark m, std::uint64_t steps, std::size_t failures) const;
   // The recorded lines one by one (without the pending steps).
   std::size_t size() const { return lines_.size(); }
   const std::string& line(std::size_t k) const { return lines_[k]; }
@@ -50,8 +57,15 @@ class Trace {
   static std::string vec(const Vec3& v);
 
  private:
+  // Appends "steps N" and "failed_step" lines for the steps and failed
+  // steps (Solver::failed_steps) after `steps` and `failures` up to
+  // `steps_to` and `failures_to`, and advances both.
+  static void pending(const std::vector<std::uint64_t>& failed, std::uint64_t steps_to, std::size_t failures_to,
+                      std::uint64_t& steps, std::size_t& failures, std::vector<std::string>& out);
+
   std::vector<std::string> lines_;
   std::uint64_t traced_steps_ = 0;
+  std::size_t traced_failures_ = 0;
 };
 
 }  // namespace tendril

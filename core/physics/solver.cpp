@@ -103,6 +103,15 @@ void Solver::compute_forces() {
 }
 
 void Solver::step() {
+  try {
+    take_step();
+  } catch (...) {
+    failed_.push_back(steps_);
+    throw;
+  }
+}
+
+void Solver::take_step() {
   if (steps_ % kRunawayCheckEvery == 0) check_runaway();
   size_scratch();
   if (fused_kick_drift_applies()) {

@@ -125,6 +125,11 @@ class Solver {
   SolverSettings settings;
 
   void step();
+  // The values of steps() at which a step failed (threw). A failed step may
+  // have changed the model - velocities reset, forces of the positions it
+  // started from - so the trace journals it (`failed_step`, io/trace.hpp)
+  // and a replay takes it again, failing the same way.
+  const std::vector<std::uint64_t>& failed_steps() const { return failed_; }
   // Steps until both the residual and motion() are below `tolerance` [N], or
   // `max_steps` were taken.
   // `progress` (if set) is called every `progress_every` steps.
@@ -270,6 +275,8 @@ class Solver {
   int ke_samples_ = 0;
   bool half_step_ = false;  // velocities are Leapfrog's, half a step behind the positions
   std::uint64_t steps_ = 0, resets_ = 0, evaluations_ = 0;
+  std::vector<std::uint64_t> failed_;
+  void take_step();
   double time_ = 0;
   // Scratch, sized to the particle capacity (on growth only, never per step).
   std::vector<double> mass_;       // M of this step, per particle

@@ -164,6 +164,13 @@ inline void apply_every_command(Recorded& r, const std::filesystem::path& base) 
   r.run("steps", {id(3)});
   r.run("remove_goal", {id(g)});
   r.run("steps", {id(2)});
+  // A step that fails (physical masses, and particles without any), journaled as such.
+  Args physical(11, none()), fictitious(11, none());
+  physical[6] = word("physical");
+  fictitious[6] = word("fictitious");
+  r.run("settings", physical);
+  r.run("failed_step", {});
+  r.run("settings", fictitious);
 }
 
 }  // namespace tendril::test
