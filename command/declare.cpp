@@ -6,7 +6,7 @@ std::vector<Param> section_params() {
   return {{"EA", Type::Number, "axial stiffness [N]", {0, kInf}},
           {"EI", Type::Number, "bending stiffness [N m^2] (beams; 0 for cables and patches)", {0, kInf}},
           {"prestress", Type::Number, "geometric tension T [N]"},
-          {"line_mass", Type::Number, "physical mass per length [kg/m]", {0, kInf}}};
+          {"line_mass", Type::Number, "physical mass per length [kg/m]", {0, kMaxLineMass}}};
 }
 
 std::vector<Param> with_section(std::vector<Param> before, std::vector<Param> after) {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "command/command.hpp"
+#include "model/limits.hpp"
 #include "model/model.hpp"
 
 namespace tendril::command {

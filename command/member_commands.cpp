@@ -187,7 +187,7 @@ void declare_members(std::vector<Command>& out) {
   out.push_back({"rest_length", "the rest length of the beam (else cable) edge between consecutive particles",
                  Effect::Setting,
                  {{"a", Type::Particle, "one particle"}, {"b", Type::Particle, "its neighbour"},
-                  {"length", Type::Number, "rest length [m]", {0, kInf, true}}},
+                  {"length", Type::Number, "rest length [m]", {0, kMaxRestLength, true}}},
                  Returns::Nothing,
                  [](Target& t, Args& a) {
                    t.model.set_rest_length(particle(a, 0), particle(a, 1), a[2].number);

@@ -37,14 +37,14 @@ void declare_topology(std::vector<Command>& out) {
                  [](Target& t, Args& a) { return particle_result(t.model.explode_from(particle(a, 0), block(a, 1))); }});
   out.push_back({"cable", "rule 6: a tension-only cable between two particles", Effect::Topology,
                  with_section({{"a", Type::Particle, "one end"}, {"b", Type::Particle, "the other end"}},
-                              {{"rest_length", Type::Number, "rest length [m]; 0: the current distance", {0, kInf}}}),
+                              {{"rest_length", Type::Number, "rest length [m]; 0: the current distance", {0, kMaxRestLength}}}),
                  Returns::Block, [](Target& t, Args& a) {
                    return block_result(t.model.add_cable(particle(a, 0), particle(a, 1), section_at(a, 2), a[6].number));
                  }});
   out.push_back({"bar", "rule 6: a two-way elastic bar (tension and compression) between two particles",
                  Effect::Topology,
                  with_section({{"a", Type::Particle, "one end"}, {"b", Type::Particle, "the other end"}},
-                              {{"rest_length", Type::Number, "rest length [m]; 0: the current distance", {0, kInf}}}),
+                              {{"rest_length", Type::Number, "rest length [m]; 0: the current distance", {0, kMaxRestLength}}}),
                  Returns::Block, [](Target& t, Args& a) {
                    return block_result(
                        t.model.add_elastic_bar(particle(a, 0), particle(a, 1), section_at(a, 2), a[6].number));

@@ -9,6 +9,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/input_file.hpp"
+#include "model/limits.hpp"
 #include "physics/settings_check.hpp"
 #include "query/element_results.hpp"
 
@@ -33,6 +34,11 @@ namespace {
 std::pair<unsigned, unsigned> edge_key(unsigned x, unsigned y) { return {std::min(x, y), std::max(x, y)}; }
 
 constexpr int kVersion = 1;
+
+// The bounds the commands check too (model/limits.hpp), in their words.
+bool rest_in_range(double rest) { return rest > 0 && rest <= kMaxRestLength; }
+constexpr const char* kRestRange = "must be > 0 and <= 1e+13";
+constexpr const char* kLineMassRange = "must be from 0 to 1e+12";
 
 // A name or value as an error message shows it: at most 40 characters, so
 // that a 50 MB attribute does not come back as a 50 MB message.
@@ -807,7 +813,7 @@ class Attributes {
     s.line_mass = real("line_mass", 0.0);
     if (!(s.EA > 0)) bad("EA", "must be > 0");
     if (beam ? !(s.EI > 0) : !(s.EI >= 0)) bad("EI", beam ? "must be > 0" : "must be >= 0");
-    if (!(s.line_mass >= 0)) bad("line_mass", "must be >= 0");
+    if (!(s.line_mass >= 0 && s.line_mass <= kMaxLineMass)) bad("line_mass", kLineMassRange);
     if (beam) {
       s.GJ = real("GJ", 0.0);
       s.EIy = real("EIy", 0.0);
@@ -954,7 +960,7 @@ BlockRecord Reader::read_cable(const tinyxml2::XMLElement* e, BlockKind kind) co
   if (pa == pb) a.bad("b", "is " + std::to_string(pb) + ", the same particle as 'a'");
   b.section = a.section(false);
   double rest = a.real("rest_length");
-  if (!(rest > 0)) a.bad("rest_length", "must be > 0");
+  if (!rest_in_range(rest)) a.bad("rest_length", kRestRange);
   b.nodes = {pa, pb};
   b.edges.push_back({pa, pb, rest});
   a.done();
@@ -996,7 +1002,7 @@ BlockRecord Reader::read_beam(const tinyxml2::XMLElement* e) const {
       node_elements.push_back(c);
     } else if (std::strcmp(c->Name(), "segment") == 0) {
       double rest = ca.real("rest");
-      if (!(rest > 0)) ca.bad("rest", "must be > 0");
+      if (!rest_in_range(rest)) ca.bad("rest", kRestRange);
       rests.push_back(rest);
       if (b.dofs == 6) ends.emplace_back(ca.rotation(kEndANames), ca.rotation(kEndBNames));
     } else {
@@ -1109,7 +1115,7 @@ void Reader::read_edge_or_triangle(const tinyxml2::XMLElement* c, Attributes& ca
                                    std::vector<const tinyxml2::XMLElement*>& edge_elements) const {
   if (std::strcmp(c->Name(), "edge") == 0) {
     EdgeRecord r{ca.index("a"), ca.index("b"), ca.real("rest")};
-    if (!(r.rest > 0)) ca.bad("rest", "must be > 0");
+    if (!rest_in_range(r.rest)) ca.bad("rest", kRestRange);
     if (ca.raw("prestress")) {  // the edge's own (set_patch_prestress)
       r.prestress = ca.real("prestress");
       if (!(r.prestress >= 0)) ca.bad("prestress", "must be >= 0 [N]");

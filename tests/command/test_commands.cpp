@@ -254,3 +254,25 @@ TEST_CASE("a failed step is journaled, and its replay fails it again to the same
                        "step of)",
                        ModelError);
 }
+
+// fuzz_commands' second finding: this bar (line mass 1e12 on a rest length
+// of 1.8e308) lumped an infinite mass on its ends, and the model failed its
+// check. Rest lengths and line masses are bounded (model/limits.hpp), by the
+// commands and the model database reader alike.
+TEST_CASE("a line mass times a rest length stays finite: both are bounded everywhere") {
+  Recorded r;
+  const std::uint32_t a = r.particle(0, 0, 0), b = r.particle(1, 0, 0);
+  CHECK_THROWS_WITH_AS(r.run("bar", {id(a), id(b), num(1e-300), num(-0.0), num(-1), num(1e12), num(1.7976931348623157e308)}),
+                       "bar: 'rest_length' must be from 0 to 1e+13", command::CommandError);
+  CHECK_THROWS_WITH_AS(r.run("cable", {id(a), id(b), num(1), num(0), num(0), num(1.5e12), num(0)}),
+                       "cable: 'line_mass' must be from 0 to 1e+12", command::CommandError);
+  r.run("bar", {id(a), id(b), num(1), num(0), num(0), num(1e12), num(1e13)});
+  CHECK(r.model.particles.lumped_mass[a] == 5e24);
+  CHECK(r.model.check() == "");
+  std::string xml = r.xml();
+  const std::size_t at = xml.find("rest_length=\"") + 13;
+  xml.replace(at, xml.find('"', at) - at, "1e14");
+  Model m;
+  SolverSettings s;
+  CHECK_THROWS_WITH_AS(load_model_xml_string(xml, m, s, "bar.xml"), doctest::Contains("must be > 0 and <= 1e+13"), ModelError);
+}

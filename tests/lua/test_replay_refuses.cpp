@@ -41,7 +41,7 @@ TEST_CASE("replay refuses the values Lua and the model reader refuse, naming lin
   const std::pair<const char*, const char*> cases[] = {
       {"beam-from-segments-huge", "2: beam_from: 'segments' '1e300' is not a whole number"},
       {"beam-section6-gj-neg", "5: section6: 'GJ' must be >= 0"},
-      {"cable-rest-neg", "3: cable: 'rest_length' must be >= 0"},
+      {"cable-rest-neg", "3: cable: 'rest_length' must be from 0 to 1e+13"},
       {"dt-negative", "4: settings: 'dt' must be a finite number > 0"},
       {"dt-word", "3: settings: 'dt' 'fast' is not a number"},
       {"dt-zero", "4: settings: 'dt' must be a finite number > 0"},
