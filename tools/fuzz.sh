@@ -3,34 +3,49 @@
 # AddressSanitizer and UndefinedBehaviorSanitizer on) and runs each for
 # SECONDS (default 60), starting from its seed corpus; new inputs that reach
 # new code are kept in build-fuzz/corpus-NAME for the next run. A crash, a
-# sanitizer report, a leak or an input slower than 10 s fails, leaving the
-# input in build-fuzz/ (crash-*, timeout-*, leak-*): reproduce it with
+# sanitizer report, a leak, an input slower than 10 s or one that needs more
+# than 2 GB fails (exit 1), leaving the input in build-fuzz/ (crash-*,
+# timeout-*, leak-*, oom-*) and libFuzzer's whole output in
+# build-fuzz/fuzz_NAME.log: reproduce it with
 #   build-fuzz/tests/fuzz/fuzz_NAME FILE
-#   tools/fuzz.sh [SECONDS] [NAME...]     NAME: model_xml, journal
+#   tools/fuzz.sh [SECONDS] [NAME...]     NAME: model_xml, journal, commands
+# Each run ends with one line: executions, coverage (libFuzzer's cov: edges
+# and ft: features) and the corpus size.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(model_xml journal)
+[ ${#targets[@]} -gt 0 ] || targets=(model_xml journal commands)
 launcher=()
 command -v ccache >/dev/null &&
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DTENDRIL_FUZZ=ON \
       -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang "${launcher[@]}" >/dev/null
 cmake --build build-fuzz --parallel "$(nproc)" --target "${targets[@]/#/fuzz_}"
+status=0
 for name in "${targets[@]}"; do
   corpus=build-fuzz/corpus-$name
+  log=build-fuzz/fuzz_$name.log
   mkdir -p "$corpus"
   echo "fuzz_$name: $seconds s"
+  # One process (no -fork): a finding stops the run with a non-zero status.
+  set +e
   (cd build-fuzz && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
      "tests/fuzz/fuzz_$name" "corpus-$name" "../tests/fuzz/corpus/$name" \
-     -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 2>&1 |
-     grep -E "^#[0-9]+ +(INITED|DONE)|^stat::(number_of_executed_units|peak_rss_mb)|ERROR|SUMMARY|Test unit written|^cov|==[0-9]+==" || true)
-  # libFuzzer's exit status is lost in the pipe: a finding leaves its file.
-  if compgen -G "build-fuzz/crash-*" >/dev/null || compgen -G "build-fuzz/timeout-*" >/dev/null ||
-     compgen -G "build-fuzz/leak-*" >/dev/null || compgen -G "build-fuzz/oom-*" >/dev/null; then
-    echo "fuzz_$name found a fault: $(ls build-fuzz/crash-* build-fuzz/timeout-* build-fuzz/leak-* build-fuzz/oom-* 2>/dev/null)" >&2
-    exit 1
+     -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
+     >"fuzz_$name.log" 2>&1)
+  code=$?
+  set -e
+  grep -E "ERROR|SUMMARY|Test unit written|fuzz_$name: |==[0-9]+==" "$log" | head -40 || true
+  done_line=$(grep -E "^#[0-9]+[[:space:]]+DONE" "$log" | tail -1 || true)
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  cov=$(grep -oE "cov: [0-9]+ ft: [0-9]+ corp: [0-9]+/[0-9]+[a-zA-Z]*" <<<"$done_line" || true)
+  echo "fuzz_$name: ${runs:-?} executions in $seconds s, ${cov:-no DONE line}"
+  if [ "$code" -ne 0 ]; then
+    echo "fuzz_$name found a fault (exit $code): see $log and $(ls build-fuzz/crash-* build-fuzz/timeout-* \
+      build-fuzz/leak-* build-fuzz/oom-* 2>/dev/null | tr '\n' ' ')" >&2
+    status=1
   fi
 done
+exit $status
