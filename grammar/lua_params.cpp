@@ -67,7 +67,8 @@ void begin_stepping() {
 }
 
 std::string undeclared_param(const SceneOptions& options, const SceneReport& report) {
-  for (const auto& [key, value] : options.params) {
+  for (const auto& entry : options.params) {
+    const std::string& key = entry.first;  // a structured binding, clang 14 (the sanitizer build) cannot capture
     const auto& declared = report.params;
     if (std::any_of(declared.begin(), declared.end(), [&](const SceneReport::Param& p) { return p.name == key; }))
       continue;
