@@ -63,6 +63,20 @@ ParticleId Model::merge(const std::vector<ParticleId>& ps) {
       }
     }
   }
+  // Two particles joined to one neighbour in one patch (two apart along a
+  // row, not only diagonal corners) would join it twice: a patch the model
+  // database cannot hold (fuzz_commands found such a merge that passed check()).
+  std::map<std::pair<BlockId, ParticleId>, ParticleId> joined;
+  for (ParticleId p : set)
+    for (Dart d : darts_of(p)) {
+      const Dart n = map.alpha(0, d);
+      if (n == d || blocks[dart_block[d]].kind != BlockKind::Patch) continue;
+      const auto [at, fresh] = joined.emplace(std::pair{dart_block[d], dart_particle[n]}, p);
+      if (!fresh && at->second != p)
+        throw ModelError("merge: particles " + pid(at->second) + " and " + pid(p) + " are both joined to particle " +
+                         pid(dart_particle[n]) + " in patch " + std::to_string(dart_block[d]) +
+                         "; merging them would join it twice");
+    }
   Vec3 x = Vec3::Zero(), v = Vec3::Zero(), load = Vec3::Zero(), moment = Vec3::Zero(), w = Vec3::Zero();
   std::uint8_t lock = 0;
   double point_mass = 0;

@@ -276,3 +276,21 @@ TEST_CASE("a line mass times a rest length stays finite: both are bounded everyw
   SolverSettings s;
   CHECK_THROWS_WITH_AS(load_model_xml_string(xml, m, s, "bar.xml"), doctest::Contains("must be > 0 and <= 1e+13"), ModelError);
 }
+
+// fuzz_commands' third finding: merging two particles of a patch that are
+// two apart along a row (both joined to the one between) passed check() and
+// left a patch the model database refuses to save; it is refused.
+TEST_CASE("a merge that would join a patch particle twice is refused, and changes nothing") {
+  Recorded r;
+  std::vector<std::uint32_t> grid;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) grid.push_back(r.particle(j, i, 0));
+  r.run("quad_grid", join(join({id(3), id(3)}, section(1e3, 0)), {ids(grid)}));
+  const std::string before = r.xml();
+  CHECK_THROWS_WITH_AS(r.run("merge", {ids({grid[5], grid[3]})}),
+                       "merge: particles 3 and 5 are both joined to particle 4 in patch 0; merging them would join it twice",
+                       ModelError);
+  CHECK(r.xml() == before);
+  CHECK_THROWS_WITH_AS(r.run("merge", {ids({grid[0], grid[4]})}), doctest::Contains("are diagonal corners of a patch quad"),
+                       ModelError);
+}
