@@ -74,6 +74,21 @@ void declare_goals(std::vector<Command>& out) {
                    r.index = t.model.add_goal(g);
                    return r;
                  }});
+  out.push_back({"rigid", "a rigid-body goal: the particles move as one body, their shape now its rest shape (shape matching)",
+                 Effect::Setting,
+                 {{"weight", Type::Number, "the stiffness holding the shape [N/m]", {0, kInf, true}},
+                  {"particles", Type::Particles, "three or more particles, not on a line"}},
+                 Returns::Goal, [](Target& t, Args& a) {
+                   Goal g;
+                   g.kind = Goal::Rigid;
+                   g.members.assign(a[1].ids.begin(), a[1].ids.end());
+                   g.weight = a[0].number;
+                   Result r;
+                   r.kind = Returns::Goal;
+                   r.index = t.model.add_goal(g);
+                   return r;
+                 }});
+  out.back().lua = "";  // m:rigid(particles, weight), m:goal{kind = "rigid", ...} (grammar/lua_goals.cpp)
   out.push_back({"goal_weight", "sets a goal's weight", Effect::Setting,
                  {{"goal", Type::Goal, "a goal"}, {"weight", Type::Number, "[N/m]", {0, kInf, true}}}, Returns::Nothing,
                  [](Target& t, Args& a) {

@@ -45,9 +45,16 @@ int l_goal(lua_State* L) {
   Goal g;
   const std::string kind = field_string(L, 2, "kind", fn, "");
   if (!parse_goal_kind(kind, g.kind))
-    key_error(fn, "kind", "must be \"anchor\", \"plane\", \"line\", \"length\" or \"planar\", got \"" + kind + "\"");
+    key_error(fn, "kind", "must be \"anchor\", \"plane\", \"line\", \"length\", \"planar\" or \"rigid\", got \"" + kind + "\"");
   if (!has_field(L, 2, "weight")) key_error(fn, "weight", "is required [N/m]");
   g.weight = field_number(L, 2, "weight", fn, 0);
+  if (g.kind == Goal::Rigid) {  // the rigid command
+    lua_getfield(L, 2, "particles");
+    const std::vector<ParticleId> ps = check_particle_list(L, lua_gettop(L), s, fn);
+    lua_pop(L, 1);
+    using command::Value;
+    return push_result(L, s, apply_command(L, s, "rigid", {Value::of_number(g.weight), Value::of_ids({ps.begin(), ps.end()})}, fn));
+  }
   if (g.kind == Goal::Planar) {  // the planarity command
     lua_getfield(L, 2, "particles");
     const std::vector<ParticleId> ps = check_particle_list(L, lua_gettop(L), s, fn);
@@ -93,10 +100,22 @@ int l_planarity(lua_State* L) {
                                          fn));
 }
 
+// m:rigid({p, q, r, ...}, weight): the particles as one rigid body.
+int l_rigid(lua_State* L) {
+  const char* fn = "rigid";
+  Scene& s = check_scene(L, fn);
+  const std::vector<ParticleId> ps = check_particle_list(L, 2, s, fn);
+  using command::Value;
+  return push_result(L, s, apply_command(L, s, "rigid",
+                                         {Value::of_number(check_number(L, 3, fn)), Value::of_ids({ps.begin(), ps.end()})},
+                                         fn));
+}
+
 }  // namespace
 
 void add_goal_methods(lua_State* L) {
   set_fn<l_anchor>(L, "anchor");
+  set_fn<l_rigid>(L, "rigid");
   set_fn<l_planarity>(L, "planarity");
   set_fn<l_goal>(L, "goal");
 }

@@ -610,6 +610,19 @@ std::string write_document(const Model& m, const SolverSettings& s) {
     for (const Goal& g : m.goals) {
       w.open("goal");
       w.attr("kind", goal_kind_name(g.kind));
+      if (g.kind == Goal::Rigid) {  // its members with their rest offsets
+        w.attr("weight", g.weight);
+        for (std::size_t k = 0; k < g.members.size(); ++k) {
+          w.open("member");
+          w.attr("p", dense[g.members[k]]);
+          w.attr("x", g.rest[k].x());
+          w.attr("y", g.rest[k].y());
+          w.attr("z", g.rest[k].z());
+          w.close();
+        }
+        w.close();
+        continue;
+      }
       w.attr("i", dense[g.i]);
       if (g.kind == Goal::Planar) {
         w.attr("j", dense[g.j]);
@@ -1255,7 +1268,22 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
         r.element = c;
         Goal& g = r.goal;
         const char* kind = a.raw("kind");
-        if (!kind || !parse_goal_kind(kind, g.kind)) a.bad("kind", "must be anchor, plane, line, length or planar");
+        if (!kind || !parse_goal_kind(kind, g.kind)) a.bad("kind", "must be anchor, plane, line, length, planar or rigid");
+        if (g.kind == Goal::Rigid) {  // <member p x y z/>: a particle and its rest offset
+          g.weight = a.real("weight");
+          a.done();
+          for (const tinyxml2::XMLElement* e2 = c->FirstChildElement(); e2; e2 = e2->NextSiblingElement()) {
+            if (std::strcmp(e2->Name(), "member") != 0)
+              fail(e2, "unknown element <" + clipped(e2->Name()) + "> inside a rigid <goal>");
+            Attributes ma(*this, e2);
+            g.members.push_back(ma.index("p"));
+            g.rest.push_back(Vec3(ma.real("x"), ma.real("y"), ma.real("z")));
+            ma.done();
+            no_children(e2);
+          }
+          d.goals.push_back(r);
+          continue;
+        }
         g.i = a.index("i");
         if (g.kind == Goal::Planar) {
           g.j = a.index("j");
@@ -1483,6 +1511,19 @@ void build(const Reader& reader, const Document& d, Model& m) {
   }
   for (const GoalRecord& r : d.goals) {
     Goal g = r.goal;
+    for (ParticleId& p : g.members) {  // a rigid body: i is its first member
+      auto it = id_of.find(p);
+      if (it == id_of.end()) reader.fail(r.element, "<member p>: no particle " + std::to_string(p));
+      p = it->second;
+    }
+    if (g.kind == Goal::Rigid) {
+      try {
+        m.add_goal(g);
+      } catch (const ModelError& e) {
+        reader.fail(r.element, e.what());
+      }
+      continue;
+    }
     auto i = id_of.find(g.i);
     if (i == id_of.end()) reader.fail(r.element, "attribute 'i': no particle " + std::to_string(g.i));
     g.i = i->second;

@@ -81,19 +81,26 @@ struct Cst {
 // `direction`. Line: i onto the line through `point` along `direction`
 // (either of any non-zero length, stored as given). Length: i and j at
 // `length` apart. Planar: the quad face i, j, k, l onto its best-fit plane
-// (physics/planarity.hpp). The explicit integrators read it as a spring of
+// (physics/planarity.hpp). Rigid: the particles `members` move as one body
+// (thesis 6.1: the textile module as a rigid body; 6 DOF for three or more
+// particles not on a line), each pulled towards where the body's rest shape
+// `rest` (offsets from its centroid) puts it, fitted to the current
+// positions by the best rotation about their centroid (shape matching,
+// physics/rigid_body.hpp); i is members[0]. The explicit integrators read it as a spring of
 // stiffness `weight` to the same projection (into S, eq. 3.4), so every
 // integrator honours it. goals.cpp.
 struct Goal {
-  enum Kind : std::uint8_t { Anchor, Plane, Line, Length, Planar };
+  enum Kind : std::uint8_t { Anchor, Plane, Line, Length, Planar, Rigid };
   Kind kind = Anchor;
   ParticleId i = kNone, j = kNone;  // j: Length and Planar
   ParticleId k = kNone, l = kNone;  // Planar only
   Vec3 point = Vec3::Zero(), direction = Vec3::Zero();
   double length = 0;
   double weight = 0;
+  std::vector<ParticleId> members;  // Rigid only
+  std::vector<Vec3> rest;           // Rigid: each member's offset from the rest centroid [m]
 };
-const char* goal_kind_name(Goal::Kind k);  // "anchor", "plane", "line", "length", "planar"
+const char* goal_kind_name(Goal::Kind k);  // "anchor", "plane", "line", "length", "planar", "rigid"
 bool parse_goal_kind(const std::string& name, Goal::Kind& out);
 
 // A flat element buffer, partitioned for multi-resolution (thesis 5.5.2.3):

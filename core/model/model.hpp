@@ -333,6 +333,7 @@ class Model {
   // with its particles (delete, merge, explode): remove_goal shifts the later
   // indices down by one.
   std::size_t add_goal(Goal g);
+  void check_rigid_members(Goal& g, const std::string& fn) const;  // goals.cpp
   void remove_goal(std::size_t index);
   void set_goal_weight(std::size_t index, double weight);
   Vec3 gravity = Vec3::Zero();

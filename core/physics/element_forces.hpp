@@ -188,6 +188,7 @@ inline GoalForce goal_force(const Goal& g, const Vec3* x, double gf) {
       return {Vec3((T / l) * d), w + (T > 0 ? gf * T / l : 0.0)};
     }
     case Goal::Planar: break;  // four corners: physics/planarity.hpp
+    case Goal::Rigid: break;   // its members: physics/rigid_body.hpp
   }
   return {};
 }

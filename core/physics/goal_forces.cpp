@@ -3,6 +3,7 @@
 // so the fictitious masses keep the step stable.
 #include "physics/element_forces.hpp"
 #include "physics/planarity.hpp"
+#include "physics/rigid_body.hpp"
 #include "physics/solver.hpp"
 
 namespace tendril {
@@ -10,8 +11,22 @@ namespace tendril {
 void Solver::accumulate_goal_forces(const Vec3* x, Vec3* F, double* S) const {
   const std::uint8_t* active = model_.particles.active.data();
   const double gf = settings.geometric_factor;
+  std::vector<Vec3> pulls;
   for (const Goal& g : model_.goals) {
     if (!active[g.i] || (g.j != kNone && !active[g.j])) continue;  // a passive particle stays frozen
+    if (g.kind == Goal::Rigid) {
+      bool all = true;
+      for (ParticleId p : g.members) all = all && active[p];
+      if (!all) continue;
+      // S: the row sum of w (I - 1 1^T / n), 2 w (1 - 1/n), as for planarity.
+      rigid_pulls(g, x, pulls);
+      const double n = double(g.members.size());
+      for (std::size_t a = 0; a < g.members.size(); ++a) {
+        F[g.members[a]] += pulls[a];
+        S[g.members[a]] += 2 * g.weight * (1 - 1 / n);
+      }
+      continue;
+    }
     if (g.kind == Goal::Planar) {
       if (!(active[g.k] & active[g.l])) continue;
       // S: the row sum of the goal's stiffness, w (1 - 1/4) on a corner's

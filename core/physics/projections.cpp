@@ -3,6 +3,7 @@
 
 #include "physics/element_forces.hpp"
 #include "physics/planarity.hpp"
+#include "physics/rigid_body.hpp"
 
 namespace tendril {
 
@@ -78,6 +79,15 @@ void accumulate_projections(const Model& m, const Vec3* x, const Quat* q, double
   }
   for (const Goal& g : m.goals) {  // the exact projections, weight w (twice it for a length)
     if (!active[g.i] || (g.j != kNone && !active[g.j])) continue;
+    if (g.kind == Goal::Rigid) {  // each member onto the fitted rest shape, weight w
+      bool all = true;
+      for (ParticleId p : g.members) all = all && active[p];
+      if (!all) continue;
+      std::vector<Vec3> pulls;
+      rigid_pulls(g, x, pulls);
+      for (std::size_t a = 0; a < g.members.size(); ++a) add(s, g.members[a], g.weight, pulls[a]);
+      continue;
+    }
     if (g.kind == Goal::Planar) {  // each corner onto the best-fit plane, weight w
       if (!(active[g.k] & active[g.l])) continue;
       const PlanarityPulls f = planarity_pulls(g, x);

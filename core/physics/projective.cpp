@@ -70,6 +70,13 @@ void ProjectiveSystem::terms(const Model& m, const std::vector<int>& row, const 
   for (const Goal& g : m.goals) {
     if (g.kind == Goal::Length) {
       add_term<2>(t, row, {g.i, g.j}, {-1, 1}, g.weight);
+    } else if (g.kind == Goal::Rigid) {  // w (I - 1 1^T / n): the members about their centroid
+      const double n = double(g.members.size());
+      for (ParticleId a : g.members) {
+        if (row[a] < 0) continue;
+        for (ParticleId b : g.members)
+          if (row[b] >= 0) t(row[a], row[b], g.weight * ((a == b ? 1.0 : 0.0) - 1 / n));
+      }
     } else if (g.kind == Goal::Planar) {  // w (I - 1 1^T / 4): the corners about their centroid
       const ParticleId c[4] = {g.i, g.j, g.k, g.l};
       for (int a = 0; a < 4; ++a) {

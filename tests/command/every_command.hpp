@@ -136,6 +136,8 @@ inline void apply_every_command(Recorded& r, const std::filesystem::path& base) 
   const std::size_t warp_pairs = warp_weft.size() / 2;
   warp_weft.insert(warp_weft.end(), weft_sides.begin(), weft_sides.end());
   r.run("patch_prestress", {id(patch_a), num(3), num(1.5), id(warp_pairs), ids(warp_weft)});
+  // Three patch particles as a rigid body.
+  r.run("rigid", {num(1e3), ids({grid[0], grid[1], grid[3]})});
   Args form(10, none());
   form[0] = id(patch_a);
   form[1] = word("form");

@@ -446,6 +446,25 @@ TEST_CASE("model database: a merge of two diagonal corners of a patch quad is re
   CHECK(model_xml_string(m, SolverSettings{}) == before);
 }
 
+TEST_CASE("model database: a merge that would put a patch edge in three quads is refused, so the grid saves") {
+  // Found by the random command test: merging two particles on no common
+  // quad (above and below the centre of a 3 x 3 grid) made the centre's
+  // edge to them one edge of four quads, which the database cannot hold.
+  Model m;
+  std::vector<ParticleId> grid;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) grid.push_back(m.add_particle(Vec3(c, r, 0)));
+  m.add_quad_grid(grid, 3, 3, Section{100, 0, 0, 0});
+  const std::string before = model_xml_string(m, SolverSettings{});
+  CHECK_THROWS_WITH_AS(m.merge({grid[1], grid[7]}),
+                       "merge: it would put an edge of patch 0 in three quads; merge fewer particles at once", ModelError);
+  CHECK(m.check() == "");
+  CHECK(model_xml_string(m, SolverSettings{}) == before);
+  // Two corners of one patch that share no quad and no quad's edge still merge.
+  m.merge({grid[0], grid[8]});
+  CHECK(m.check() == "");
+}
+
 TEST_CASE("model database: 6-DOF beams, frames, angular velocities and moments round-trip bit for bit") {
   Model a;
   SolverSettings s;
