@@ -446,10 +446,12 @@ TEST_CASE("model database: a merge of two diagonal corners of a patch quad is re
   CHECK(model_xml_string(m, SolverSettings{}) == before);
 }
 
-TEST_CASE("model database: a merge that would put a patch edge in three quads is refused, so the grid saves") {
-  // Found by the random command test: merging two particles on no common
-  // quad (above and below the centre of a 3 x 3 grid) made the centre's
-  // edge to them one edge of four quads, which the database cannot hold.
+TEST_CASE("model database: a merge that would put a patch edge in four quads is refused, so the grid saves") {
+  // Found by the random command test too: merging two particles on no
+  // common quad (above and below the centre of a 3 x 3 grid) made the
+  // centre's edge to them one edge of four quads, which the database cannot
+  // hold (refused by the rule of fuzz_commands' finding: two particles
+  // joined to one neighbour).
   Model m;
   std::vector<ParticleId> grid;
   for (int r = 0; r < 3; ++r)
@@ -457,7 +459,8 @@ TEST_CASE("model database: a merge that would put a patch edge in three quads is
   m.add_quad_grid(grid, 3, 3, Section{100, 0, 0, 0});
   const std::string before = model_xml_string(m, SolverSettings{});
   CHECK_THROWS_WITH_AS(m.merge({grid[1], grid[7]}),
-                       "merge: it would put an edge of patch 0 in three quads; merge fewer particles at once", ModelError);
+                       "merge: particles 1 and 7 are both joined to particle 4 in patch 0; merging them would join it twice",
+                       ModelError);
   CHECK(m.check() == "");
   CHECK(model_xml_string(m, SolverSettings{}) == before);
   // Two corners of one patch that share no quad and no quad's edge still merge.
