@@ -9,19 +9,11 @@
 #include "io/model_xml.hpp"
 #include "command/replay.hpp"
 #include "io/trace.hpp"
+#include "every_integrator.hpp"
 #include "physics/solver.hpp"
 
 using namespace tendril;
-
-namespace {
-
-std::vector<Integrator> every_integrator() {
-  std::vector<Integrator> all(kIntegrators.begin(), kIntegrators.end());
-  all.insert(all.end(), kConstraintIntegrators.begin(), kConstraintIntegrators.end());
-  return all;
-}
-
-}  // namespace
+using test::every_integrator;
 
 TEST_CASE("goals: a particle between a spring and an anchor settles at their weighted average") {
   // A cable (k = EA/L = 1000 N/m, rest 1 m) from a support at the origin and

@@ -10,17 +10,13 @@
 #include "command/replay.hpp"
 #include "io/model_xml.hpp"
 #include "physics/planarity.hpp"
+#include "every_integrator.hpp"
 #include "physics/solver.hpp"
 
 using namespace tendril;
+using test::every_integrator;
 
 namespace {
-
-std::vector<Integrator> every_integrator() {
-  std::vector<Integrator> all(kIntegrators.begin(), kIntegrators.end());
-  all.insert(all.end(), kConstraintIntegrators.begin(), kConstraintIntegrators.end());
-  return all;
-}
 
 // The unit square twisted by +-h: corners at z = h, -h, h, -h round it. Its
 // best-fit plane is z = 0 (by symmetry, before and after), each corner h

@@ -12,17 +12,13 @@
 
 #include "io/model_xml.hpp"
 #include "physics/rigid_body.hpp"
+#include "every_integrator.hpp"
 #include "physics/solver.hpp"
 
 using namespace tendril;
+using test::every_integrator;
 
 namespace {
-
-std::vector<Integrator> every_integrator() {
-  std::vector<Integrator> all(kIntegrators.begin(), kIntegrators.end());
-  all.insert(all.end(), kConstraintIntegrators.begin(), kConstraintIntegrators.end());
-  return all;
-}
 
 // An L of three particles, A (0, 0, 0), B (1, 0, 0), C (1, 0, -1), and D
 // off its plane, (0.5, 0.5, -0.5): a body with a volume. Slack cables give
