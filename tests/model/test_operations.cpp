@@ -1772,9 +1772,10 @@ std::vector<std::pair<Dart, Quat>> global_ends(const Model& m, BlockId b) {
 }
 
 void expect_same_ends(const Model& m, const std::vector<std::pair<Dart, Quat>>& before) {
-  for (const auto& [d, q] : before) {
+  for (const auto& entry : before) {  // not a structured binding: CAPTURE's lambda takes it (clang 14 refuses)
+    const Dart d = entry.first;
     CAPTURE(d);
-    CHECK(same_rotation(global_end(m, d), q, 1e-12));
+    CHECK(same_rotation(global_end(m, d), entry.second, 1e-12));
   }
 }
 
