@@ -15,9 +15,7 @@ void Solver::accumulate_goal_forces(const Vec3* x, Vec3* F, double* S) const {
   for (const Goal& g : model_.goals) {
     if (!active[g.i] || (g.j != kNone && !active[g.j])) continue;  // a passive particle stays frozen
     if (g.kind == Goal::Rigid) {
-      bool all = true;
-      for (ParticleId p : g.members) all = all && active[p];
-      if (!all) continue;
+      if (!members_active(g, active)) continue;
       // S: the row sum of w (I - 1 1^T / n), 2 w (1 - 1/n), as for planarity.
       rigid_pulls(g, x, pulls);
       const double n = double(g.members.size());

@@ -77,13 +77,11 @@ void accumulate_projections(const Model& m, const Vec3* x, const Quat* q, double
     s.turn[b.i] += e.ta;
     s.turn[b.j] += e.tb;
   }
+  std::vector<Vec3> pulls;  // a rigid body's, reused
   for (const Goal& g : m.goals) {  // the exact projections, weight w (twice it for a length)
     if (!active[g.i] || (g.j != kNone && !active[g.j])) continue;
     if (g.kind == Goal::Rigid) {  // each member onto the fitted rest shape, weight w
-      bool all = true;
-      for (ParticleId p : g.members) all = all && active[p];
-      if (!all) continue;
-      std::vector<Vec3> pulls;
+      if (!members_active(g, active)) continue;
       rigid_pulls(g, x, pulls);
       for (std::size_t a = 0; a < g.members.size(); ++a) add(s, g.members[a], g.weight, pulls[a]);
       continue;

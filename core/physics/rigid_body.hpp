@@ -14,7 +14,15 @@
 
 namespace tendril {
 
-// w (c + R r_i - x_i) for every member, in member order, into `pull`.
+// Whether every member takes part in the step (a passive one freezes the body's goal).
+inline bool members_active(const Goal& g, const std::uint8_t* active) {
+  for (ParticleId p : g.members)
+    if (!active[p]) return false;
+  return true;
+}
+
+// w (c + R r_i - x_i) for every member, in member order, into `pull`
+// (reused: the step allocates nothing once it has grown).
 void rigid_pulls(const Goal& g, const Vec3* x, std::vector<Vec3>& pull);
 
 }  // namespace tendril

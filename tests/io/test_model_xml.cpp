@@ -429,14 +429,24 @@ TEST_CASE("model database: malformed files are refused, naming element and attri
   }
 }
 
-TEST_CASE("model database: a merge of two diagonal corners of a patch quad is refused, so the grid saves") {
-  // Issue 13: the merge passed m.check() but the model could be neither
-  // saved nor replayed.
-  Model m;
+namespace {
+
+// A 3 x 3 grid of particles 0..8, row by row, as one patch.
+std::vector<ParticleId> grid_patch_3x3(Model& m) {
   std::vector<ParticleId> grid;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) grid.push_back(m.add_particle(Vec3(c, r, 0)));
   m.add_quad_grid(grid, 3, 3, Section{100, 0, 0, 0});
+  return grid;
+}
+
+}  // namespace
+
+TEST_CASE("model database: a merge of two diagonal corners of a patch quad is refused, so the grid saves") {
+  // Issue 13: the merge passed m.check() but the model could be neither
+  // saved nor replayed.
+  Model m;
+  const std::vector<ParticleId> grid = grid_patch_3x3(m);
   const std::string before = model_xml_string(m, SolverSettings{});
   CHECK(before.find("<patch id=\"0\" rows=\"3\" cols=\"3\"") != std::string::npos);
   CHECK_THROWS_WITH_AS(m.merge({grid[0], grid[4]}),
@@ -451,12 +461,9 @@ TEST_CASE("model database: a merge that would put a patch edge in four quads is 
   // common quad (above and below the centre of a 3 x 3 grid) made the
   // centre's edge to them one edge of four quads, which the database cannot
   // hold (refused by the rule of fuzz_commands' finding: two particles
-  // joined to one neighbour).
+  // joined to one neighbour). The grid of the test above.
   Model m;
-  std::vector<ParticleId> grid;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) grid.push_back(m.add_particle(Vec3(c, r, 0)));
-  m.add_quad_grid(grid, 3, 3, Section{100, 0, 0, 0});
+  const std::vector<ParticleId> grid = grid_patch_3x3(m);
   const std::string before = model_xml_string(m, SolverSettings{});
   CHECK_THROWS_WITH_AS(m.merge({grid[1], grid[7]}),
                        "merge: particles 1 and 7 are both joined to particle 4 in patch 0; merging them would join it twice",
