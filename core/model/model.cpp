@@ -227,8 +227,8 @@ void Model::place_bar(ElementIndex e) {
   if (e >= bars.awake) return;
   const Bar& b = std::as_const(bars)[e];
   double half = 0.5 * b.line_mass * b.rest_length;
-  particles.lumped_mass[b.i] += half;
-  particles.lumped_mass[b.j] += half;
+  particles.add_lumped_mass(b.i, half);
+  particles.add_lumped_mass(b.j, half);
 }
 
 void Model::repoint_bar(ElementIndex e) {
@@ -243,8 +243,8 @@ void Model::unbind_bar(ElementIndex e) {
   if (e >= bars.awake) return;
   const Bar& bar = std::as_const(bars)[e];
   double half = 0.5 * bar.line_mass * bar.rest_length;
-  particles.lumped_mass[bar.i] -= half;
-  particles.lumped_mass[bar.j] -= half;
+  particles.add_lumped_mass(bar.i, -half);
+  particles.add_lumped_mass(bar.j, -half);
 }
 
 void Model::remove_bar(Dart d) {
@@ -364,8 +364,8 @@ void Model::place_beam6(ElementIndex e) {
   if (e >= beam6s.awake) return;
   const Beam6& b = std::as_const(beam6s)[e];
   const double half = 0.5 * b.line_mass * b.rest_length;
-  particles.lumped_mass[b.i] += half;
-  particles.lumped_mass[b.j] += half;
+  particles.add_lumped_mass(b.i, half);
+  particles.add_lumped_mass(b.j, half);
 }
 
 void Model::repoint_beam6(ElementIndex e) {
@@ -380,8 +380,8 @@ void Model::unlump_beam6(ElementIndex e) {
   if (e >= beam6s.awake) return;
   const Beam6& b = std::as_const(beam6s)[e];
   const double half = 0.5 * b.line_mass * b.rest_length;
-  particles.lumped_mass[b.i] -= half;
-  particles.lumped_mass[b.j] -= half;
+  particles.add_lumped_mass(b.i, -half);
+  particles.add_lumped_mass(b.j, -half);
 }
 
 void Model::unbind_beam6(ElementIndex e) {
@@ -446,7 +446,7 @@ void Model::rebuild_elements() {
   hinges.clear();
   beam6s.clear();
   csts.clear();
-  for (ParticleId p = 0; p < particles.capacity(); ++p) particles.lumped_mass[p] = 0.0;
+  for (ParticleId p = 0; p < particles.capacity(); ++p) particles.clear_lumped_mass(p);
   particles.clear_rotational();
   const std::size_t n = map.capacity();
   for (Dart d = 0; d < n; ++d) {

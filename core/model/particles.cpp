@@ -1,5 +1,6 @@
 #include "model/particles.hpp"
 
+#include <cmath>
 #include <utility>
 
 namespace tendril {
@@ -7,7 +8,7 @@ namespace tendril {
 void Particles::attach(UndoLog* undo) {
   log = undo;
   for (auto* v : {&position, &velocity, &force, &load}) v->attach(undo);
-  for (auto* v : {&stiffness, &point_mass, &lumped_mass}) v->attach(undo);
+  for (auto* v : {&stiffness, &point_mass, &lumped_mass, &lumped_mass_low}) v->attach(undo);
   for (auto* v : {&lock, &alive, &passive, &active, &role}) v->attach(undo);
   for (auto* v : {&generation, &first_dart, &degree, &free_slots}) v->attach(undo);
   orientation.attach(undo);
@@ -27,6 +28,7 @@ ParticleId Particles::allocate(Vec3 x) {
     stiffness.push_back(0);
     point_mass.push_back(0);
     lumped_mass.push_back(0);
+    lumped_mass_low.push_back(0);
     lock.push_back(0);
     alive.push_back(0);
     passive.push_back(0);
@@ -48,7 +50,7 @@ ParticleId Particles::allocate(Vec3 x) {
   load[p].setZero();
   stiffness[p] = 0;
   point_mass[p] = 0;
-  lumped_mass[p] = 0;
+  clear_lumped_mass(p);
   lock[p] = 0;
   alive[p] = 1;
   passive[p] = 0;
@@ -92,6 +94,29 @@ void Particles::clear_rotational() {
     rotational_slot[p] = kNone;
   }
   rotational.clear();
+}
+
+void Particles::add_lumped_mass(ParticleId p, double m) {
+  // TwoSum: sum + error == lumped_mass[p] + m exactly.
+  const double a = lumped_mass[p];
+  double sum = a + m;
+  const double b = sum - a, error = (a - (sum - b)) + (m - b);
+  double low = lumped_mass_low[p] + error;
+  // Only a rounding no longer small beside the sum (a cancellation) is
+  // folded in: otherwise the mass is the plain running sum, the same
+  // numbers as ever.
+  if (std::abs(low) > 1e-12 * std::abs(sum)) {
+    const double high = sum + low;  // FastTwoSum: |sum| >= |low| or sum ~ 0
+    low -= high - sum;
+    sum = high;
+  }
+  lumped_mass_low[p] = low;
+  lumped_mass[p] = sum;
+}
+
+void Particles::clear_lumped_mass(ParticleId p) {
+  lumped_mass[p] = 0;
+  lumped_mass_low[p] = 0;
 }
 
 void Particles::refresh_active(ParticleId p) {

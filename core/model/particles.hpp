@@ -29,6 +29,7 @@ struct Particles {
   LoggedVector<double> stiffness;   // greatest direct stiffness S (eq. 3.4)
   LoggedVector<double> point_mass;  // physical mass set on the particle [kg]
   LoggedVector<double> lumped_mass; // physical mass lumped from its elements
+  LoggedVector<double> lumped_mass_low;  // what rounding left out of lumped_mass (see add_lumped_mass)
   LoggedVector<std::uint8_t> lock;  // LockBits
   LoggedVector<std::uint8_t> alive, passive;
   LoggedVector<std::uint8_t> role;    // Role, for the extended states
@@ -55,6 +56,13 @@ struct Particles {
   std::size_t capacity() const { return alive.size(); }
   bool valid(ParticleId p) const { return p < alive.size() && alive[p]; }
   double mass(ParticleId p) const { return point_mass[p] + lumped_mass[p]; }
+  // Adds m (< 0 removes) to p's lumped mass, keeping what rounding left out
+  // in lumped_mass_low (error-free transformations) and folding it in when
+  // it is no longer small beside the mass: removing a heavy element from a
+  // light particle subtracts what was added, and a plain double kept the
+  // rounding of the heavy sum as mass (1e12 kg/m beside 1 kg/m: off by 1e-4).
+  void add_lumped_mass(ParticleId p, double m);
+  void clear_lumped_mass(ParticleId p);
   ParticleId allocate(Vec3 x);  // by value: x may live in `position`
   void release(ParticleId p);
   void refresh_active(ParticleId p);  // active and `integrated` from alive, degree and passive

@@ -195,6 +195,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       Chooser choose(in, b);
       for (const command::Param& p : c.params) args.push_back(choose.value(p, steps_left));
     }
+    if (verbose)
+      std::fprintf(stderr, "  %s\n",
+                   command::to_json(c, args).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
     const std::string before = b.xml();
     const std::size_t lines = b.trace.size(), entries = b.journal.entries.size();
     const std::uint64_t steps = b.solver.steps();
@@ -206,7 +209,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::string message =
             command::to_json(c, args).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
         const auto [back, decoded] = command::from_json(nlohmann::json::parse(message));
-        if (verbose) std::fprintf(stderr, "  %s\n", message.c_str());
         if (back != &c) fail("the JSON form names another command", message);
         command::apply(b.session, *back, decoded);
       } else {
