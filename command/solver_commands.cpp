@@ -48,7 +48,8 @@ Result apply_settings(Target& t, Args& a) {
 
 void declare_solver(std::vector<Command>& out) {
   const std::vector<const char*> integrators = {"leapfrog", "symplectic_euler", "velocity_verlet", "midpoint",
-                                                "rk4",      "vie",              "projective",      "mixed"};
+                                                "rk4",      "vie",              "projective",      "mixed",
+                                                "newton"};
   Command settings{"settings", "the solver's settings (only the keys given change; all are checked first)",
                    Effect::Setting,
                    {{"dt", Type::Number, "time step (> 0)", {}, {}, true},

@@ -916,8 +916,8 @@ void Reader::read_solver(const tinyxml2::XMLElement* e, SolverSettings& s) const
     auto i = parse_integrator(name);
     if (!i)
       a.bad("integrator", "is " + quoted(name) +
-                              "; expected leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective "
-                              "or mixed");
+                              "; expected leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective, "
+                              "mixed or newton");
     s.integrator = *i;
   }
   if (const char* name = a.raw("mass_mode")) {

@@ -27,6 +27,7 @@ const char* integrator_name(Integrator i) {
     case Integrator::VariationalImplicitEuler: return "vie";
     case Integrator::ProjectiveDynamics: return "projective";
     case Integrator::Mixed: return "mixed";
+    case Integrator::Newton: return "newton";
   }
   return "?";
 }
@@ -35,6 +36,8 @@ std::optional<Integrator> parse_integrator(std::string_view name) {
   for (Integrator i : kIntegrators)
     if (name == integrator_name(i)) return i;
   for (Integrator i : kConstraintIntegrators)
+    if (name == integrator_name(i)) return i;
+  for (Integrator i : kStaticIntegrators)
     if (name == integrator_name(i)) return i;
   return std::nullopt;
 }
@@ -52,6 +55,8 @@ int force_evaluations_per_step(Integrator i) {
     case Integrator::VariationalImplicitEuler:
     case Integrator::ProjectiveDynamics:
     case Integrator::Mixed: return 1;
+    // Newton: the residual, then one per trial of its line search.
+    case Integrator::Newton: return 1;
   }
   return 0;
 }
@@ -63,7 +68,8 @@ double fictitious_mass_scale(Integrator i) {
     case Integrator::RK4:
     case Integrator::VariationalImplicitEuler:
     case Integrator::ProjectiveDynamics:
-    case Integrator::Mixed: return 1;
+    case Integrator::Mixed:
+    case Integrator::Newton: return 1;  // Newton has no masses: 1 for a switch to another integrator
     case Integrator::SymplecticEuler: return 2;
     case Integrator::Midpoint: return 48;
   }
@@ -114,6 +120,12 @@ void Solver::step() {
 void Solver::take_step() {
   if (steps_ % kRunawayCheckEvery == 0) check_runaway();
   size_scratch();
+  if (settings.integrator == Integrator::Newton) {
+    mixed_implicit_ = false, mixed_peak_ = 0;
+    integrate_newton();
+    count_step(settings.dt);
+    return;
+  }
   if (fused_kick_drift_applies()) {
     mixed_implicit_ = false, mixed_peak_ = 0;
     fused_kick_drift(settings.integrator == Integrator::SymplecticEuler || half_step_);
@@ -132,6 +144,7 @@ void Solver::take_step() {
     case Integrator::VariationalImplicitEuler: integrate_vie(); break;
     case Integrator::ProjectiveDynamics: integrate_projective(); break;
     case Integrator::Mixed: integrate_mixed(); return;  // counts its own step and time
+    case Integrator::Newton: break;                     // taken above
   }
   count_step(implicit(settings.integrator) ? vie_dt() : settings.dt);
 }

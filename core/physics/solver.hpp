@@ -44,16 +44,21 @@ const char* damping_name(Damping d);
 // ProjectiveDynamics solves the prefactored global system instead, Mixed runs
 // Leapfrog far from equilibrium and VIE (or projective dynamics, see
 // mixed_implicit) near it (5.4.2.2).
+// Newton is static: each step one Newton iteration on the residual with the
+// exact tangent stiffness and a line search (newton.hpp, newton_step.cpp);
+// no masses, velocities zero. Bars and cables only: a model with any other
+// element refuses it with an error naming the element kind.
 enum class Integrator { Leapfrog, SymplecticEuler, VelocityVerlet, Midpoint, RK4, VariationalImplicitEuler,
-                        ProjectiveDynamics, Mixed };
+                        ProjectiveDynamics, Mixed, Newton };
 // The explicit integrators (eq. 3.9-3.25).
 inline constexpr std::array<Integrator, 5> kIntegrators = {Integrator::Leapfrog, Integrator::SymplecticEuler,
                                                           Integrator::VelocityVerlet, Integrator::Midpoint,
                                                           Integrator::RK4};
 inline constexpr std::array<Integrator, 3> kConstraintIntegrators = {
     Integrator::VariationalImplicitEuler, Integrator::ProjectiveDynamics, Integrator::Mixed};
+inline constexpr std::array<Integrator, 1> kStaticIntegrators = {Integrator::Newton};
 // "leapfrog", "symplectic_euler", "velocity_verlet", "midpoint", "rk4",
-// "vie", "projective", "mixed".
+// "vie", "projective", "mixed", "newton".
 const char* integrator_name(Integrator i);
 std::optional<Integrator> parse_integrator(std::string_view name);
 int force_evaluations_per_step(Integrator i);
@@ -117,6 +122,7 @@ struct NumericalError : ModelError {
 };
 
 class ProjectiveSystem;  // projective.hpp
+class NewtonSystem;      // newton.hpp
 
 class Solver {
  public:
@@ -143,7 +149,8 @@ class Solver {
   // Residual forces, torques and direct stiffnesses at the current positions
   // and frames.
   void compute_forces();
-  // Largest unconstrained force [N] or torque [N m] at the start of the last step.
+  // Largest unconstrained force [N] or torque [N m] at the start of the last
+  // step; Newton's at its end (its line search evaluated it).
   double residual() const { return residual_; }
   double torque_residual() const { return torque_residual_; }  // the torques alone
   double kinetic_energy() const { return kinetic_energy_; }  // eq. 3.28, rotation included
@@ -161,6 +168,11 @@ class Solver {
   // ProjectiveDynamics: how many topology or parameter changes it followed
   // without a factorisation (projective.hpp: a low-rank correction).
   std::uint64_t projective_updates() const;
+  // Newton: the work of its linear solves so far (newton.hpp).
+  struct NewtonWork {
+    std::uint64_t analyses = 0, factorizations = 0, iterations = 0;  // symbolic, numeric (3 axes: 1), CG
+  };
+  NewtonWork newton_work() const;
   // Off: every change is factored afresh (the same matrix; what the tests
   // compare the low-rank correction with).
   void set_projective_low_rank(bool on) { projective_low_rank_ = on; }
@@ -256,6 +268,7 @@ class Solver {
   void rotation_global_step(double inv_dt2);  // eq. 3.63 for the frames, VIE and PD alike
   void integrate_projective();
   void integrate_mixed();
+  void integrate_newton();  // newton_step.cpp
   void start_implicit_step(double dt);  // x0 of eq. 3.57 into x0_, first guess into xs_, qs_
   void finish_implicit_step(double dt);  // velocities (eq. 3.64), kinetic damping, commit
   // Ends a step of a synchronous integrator whose new state is (xn, vn) and,
@@ -304,6 +317,7 @@ class Solver {
   std::vector<double> cst_weight_;   // local step: the CST stiffnesses
   std::vector<Vec3> x0_, r0_;        // implicit: x0 of eq. 3.57, and its rotation vector from the frame
   std::shared_ptr<ProjectiveSystem> projective_;  // projective.hpp, built on first use
+  std::shared_ptr<NewtonSystem> newton_;          // newton.hpp, built on first use
   mutable BarChunks bar_chunks_;
   mutable std::vector<Couple> couples_;
   mutable std::pair<std::uint64_t, std::uint64_t> couples_at_{~0ull, ~0ull};  // model revision, moment revision

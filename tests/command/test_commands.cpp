@@ -110,7 +110,7 @@ TEST_CASE("a refused argument names the command and the argument, and changes no
        "settings: 'dt' must be a finite number > 0"},
       {"settings", {none(), none(), none(), none(), none(), word("euler"), none(), none(), none(), none(), none()},
        "settings: 'integrator' must be one of \"leapfrog\", \"symplectic_euler\", \"velocity_verlet\", \"midpoint\", "
-       "\"rk4\", \"vie\", \"projective\", \"mixed\", got \"euler\""},
+       "\"rk4\", \"vie\", \"projective\", \"mixed\", \"newton\", got \"euler\""},
       {"steps", {id(std::uint64_t(1) << 60)}, "steps: 'n' must be a whole number from 0 to 9.0072e+15"},
       {"formulation", {id(0), word("7"), none(), none(), none(), none(), none(), none(), none(), none()},
        "formulation: 'kind' must be one of \"3\", \"6\", \"bars\", \"form\", \"analysis\", got \"7\""},

@@ -1,0 +1,99 @@
+// The static Newton solver's step (integrator "newton"): one Newton
+// iteration on the static residual F(x) = 0, no masses, no time.
+//   K(x) dx = F(x), then x += alpha dx
+// with K the exact tangent (newton.hpp) and alpha halved from 1 until the
+// residual's 2-norm over the free coordinates falls (Armijo, on the norm:
+// with the exact K, dx is a descent direction of |F|^2). Far from
+// equilibrium a full Newton step can overshoot badly (a flat prestressed
+// net's first step is the linear membrane, whose bars then stretch); the
+// halving keeps each step a decrease. When K is not positive definite (a
+// bar in compression, a mechanism) or no alpha decreases the residual, the
+// step tries again with K + shift diag(K), shift from 1e-4 up to 1e2: a
+// more and more gradient-like, shorter step. If none decreases it, the
+// particles stay where they are and the run's verdict says it stalled.
+// Velocities stay zero. The residual and forces the step leaves are those at
+// its end (the line search evaluated them), so a run stops on the iteration
+// that reached the tolerance, not one later.
+#include <cmath>
+#include <string>
+
+#include "physics/free_axes.hpp"
+#include "physics/newton.hpp"
+#include "physics/solver.hpp"
+
+namespace tendril {
+
+namespace {
+
+// |F|^2 over the free coordinates and the largest free component's size;
+// false when a force is not finite.
+bool free_norms(const Particles& P, const Vec3* F, double& sum2, double& largest) {
+  sum2 = 0, largest = 0;
+  for (ParticleId p : P.integrated.raw()) {
+    const Vec3 f = F[p].cwiseProduct(free_axes(P.lock[p]));
+    if (!f.allFinite()) return false;
+    sum2 += f.squaredNorm();
+    largest = std::max(largest, f.squaredNorm());
+  }
+  largest = std::sqrt(largest);
+  return true;
+}
+
+constexpr double kShifts[] = {0, 1e-4, 1e-2, 1, 1e2};
+constexpr int kHalvings = 12;  // alpha down to 1/4096
+// How well each iteration solves K dx = F: the step then cuts the residual
+// by about this much where the tangent holds, so a few iterations reach
+// 1e-6 of the load, while a looser solve would take more Newton iterations
+// and a tighter one conjugate-gradient iterations that buy nothing.
+constexpr double kSolveTolerance = 1e-2;
+
+}  // namespace
+
+Solver::NewtonWork Solver::newton_work() const {
+  if (!newton_) return {};
+  return {newton_->analyses(), newton_->factorizations(), newton_->iterations()};
+}
+
+void Solver::integrate_newton() {
+  Particles& P = model_.particles;
+  if (const char* kind = NewtonSystem::unsupported(model_))
+    throw ModelError(std::string("solver: integrator \"newton\" has no tangent stiffness for ") + kind +
+                     " yet (bars and cables only); use another integrator for this model");
+  if (pressure_acts()) throw ModelError("solver: integrator \"newton\" has no tangent stiffness for pressure or area loads yet (bars and cables only); use another integrator for this model");
+  if (!couples().empty()) throw ModelError("solver: integrator \"newton\" has no tangent stiffness for moments on 3-DOF beams yet (bars and cables only); use another integrator for this model");
+  if (!newton_) newton_ = std::make_shared<NewtonSystem>();
+  compute_forces();
+  double r2 = 0, largest = 0;
+  if (!free_norms(P, P.force.data(), r2, largest))
+    throw NumericalError("solver: a force is not finite at the start of newton step " + std::to_string(steps_) +
+                         "; no particle was moved");
+  residual_ = largest, torque_residual_ = 0;
+  const double r0 = std::sqrt(r2);
+  const std::vector<ParticleId>& integrated = P.integrated.raw();
+  for (ParticleId p : integrated) P.velocity[p].setZero();
+  kinetic_energy_ = 0, motion_ = 0, half_step_ = false, ke_samples_ = 0, ke_prev_ = ke_prev2_ = 0;
+  if (r0 == 0) return;
+  for (double shift : kShifts) {
+    newton_->assemble(model_, P.position.data(), shift);
+    if (!newton_->solve(model_, P.force.data(), vs_.data(), kSolveTolerance)) continue;
+    double alpha = 1;
+    for (int h = 0; h <= kHalvings; ++h, alpha *= 0.5) {
+      for (ParticleId p : integrated) xs_[p] = P.position[p] + alpha * vs_[p];
+      accumulate_forces(xs_.data(), qs_.data(), Fs_.data(), Ss_.data(), Ts_.data(), Ks_.data());
+      ++evaluations_;
+      double s2 = 0, top = 0;
+      if (!free_norms(P, Fs_.data(), s2, top)) continue;
+      if (std::sqrt(s2) <= (1 - 1e-4 * alpha) * r0) {
+        for (ParticleId p : integrated) {
+          P.position[p] = xs_[p];
+          P.force[p] = Fs_[p];
+          P.stiffness[p] = Ss_[p];
+        }
+        residual_ = top;
+        return;
+      }
+    }
+  }
+}
+
+}  // namespace tendril
