@@ -108,7 +108,8 @@ int usage(const char* argv0, int code) {
                "  --cap          wall-time limit of each run (default 60 s)\n"
                "  --threads      solver threads (default 1)\n"
                "  --integrators  leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective,\n"
-               "                 projective1 (one local-global iteration per step), mixed (default: all)\n",
+               "                 projective1 (one local-global iteration per step), mixed, newton\n"
+               "                 (default: all)\n",
                argv0);
   return code;
 }
@@ -125,6 +126,7 @@ int main(int argc, char** argv) {
   variants.push_back({"projective", Integrator::ProjectiveDynamics, 4});
   variants.push_back({"projective1", Integrator::ProjectiveDynamics, 1});
   variants.push_back({"mixed", Integrator::Mixed, 4});
+  variants.push_back({"newton", Integrator::Newton, 4});
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];

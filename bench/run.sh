@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the benchmarks (Release, in ./build) and runs them, printing tables.
 #
-#   bench/run.sh [throughput|rule_cost|meshing|constraint_solvers|net|topology|low_rank] [options...]
+#   bench/run.sh [throughput|rule_cost|meshing|constraint_solvers|net|topology|low_rank|scaling] [options...]
 #   bench/run.sh sweep [RUNS]
 #   bench/run.sh fe [--param case=strip|ring|ring-p|net|frame] (tendril against CalculiX, bench/fe/fe.lua)
 #   bench/run.sh hybrids   (textile hybrids with every integrator, bench/hybrids.lua)
@@ -16,6 +16,10 @@
 # and on a one-node Slurm cluster it starts (bench/sweep.sh; needs root).
 # `net` (only when asked for: minutes) times every integrator to equilibrium
 # on the issue-18 net (bench/bench_net.cpp).
+# `scaling` (only when asked for: minutes) times the default solver choice
+# (newton) to equilibrium on that net from 10K to 1M particles and fits the
+# exponent (bench/bench_scaling.cpp; e.g. `bench/run.sh scaling --integrators
+# newton,projective1 --sizes 10K,40K,160K`).
 # `topology` (only when asked for) times one rule application and the step
 # after it against a steady step, every integrator, on the same net
 # (bench/bench_topology.cpp; e.g. `bench/run.sh topology --sizes 16384,100000,1M`);
@@ -64,7 +68,7 @@ case "${1:-}" in
     sweep=1
     shift
     ;;
-  throughput | rule_cost | meshing | constraint_solvers | net | topology | low_rank)
+  throughput | rule_cost | meshing | constraint_solvers | net | topology | low_rank | scaling)
     benches=("$1")
     selected=1
     shift
