@@ -10,17 +10,24 @@
 // here: unsupported() names the first element kind a model has beyond them.
 //
 // K dx = F is solved by conjugate gradients preconditioned with the exact
-// sparse LDL^T factors of K's three axis blocks (K_xx, K_yy, K_zz: the
-// couplings between axes left out). Why not LDL^T of K itself: a 3n
-// system fills in 27 times the work of a scalar one (measured on the
-// 200 x 200 net: 0.75 s per factorisation, 4 times what the axis blocks
-// and the iterations cost together). A flat net is exactly block diagonal,
-// so the iterations only pay for the slopes. The factors are kept while an
-// iteration converges in few iterations (the stiffness changes slowly near
-// equilibrium) and computed again when it took many, the shift changed or
-// the pattern did.
-// Rows are ordered axis by axis (every free x, then y, then z), each by
-// particle id, so an axis block is a diagonal block of K. The pattern
+// sparse LDL^T factors of three scalar blocks of K: its x, y and z blocks,
+// or, at a particle whose own block has one clearly softest direction (a
+// membrane's normal), the blocks of its local axes (x and y projected on
+// its tangent plane, and the normal): the couplings between axes left out.
+// Why not LDL^T of K itself: a 3n system fills in 27 times the work of a
+// scalar one (measured on the 200 x 200 net: 0.75 s per factorisation, 4
+// times what the axis blocks and the iterations cost together). A flat net
+// is exactly block diagonal, so the iterations only pay for the slopes;
+// the local axes keep a curved membrane's stiff in-plane directions apart
+// from its soft normal (after a refactorisation of the 800 x 800 net, 27
+// iterations where the global axes took 46). The factors are kept while a
+// solve converges in few iterations and computed again (with new frames)
+// when it took many, the shift changed or the pattern did: refactoring
+// after 8 iterations instead of 20 took as long on the 800 x 800 and
+// 1000 x 1000 nets (fewer iterations, one more factorisation).
+// Rows are ordered axis by axis (every free x, then y, then z), each in
+// the fill-reducing order (AMD) of its block, so an axis block is a
+// diagonal block of K and its factor needs no permutation. The pattern
 // depends on the awake bars and the free coordinates only, so the symbolic
 // analysis (ordering, elimination tree) is kept: when the model's revision
 // moves the pattern is built again and compared, and a new analysis comes
@@ -57,7 +64,9 @@ class NewtonSystem {
 
  private:
   void build_pattern(const Model& m);  // rows and patterns, when the revision moved
-  bool factor_axes();                  // the axis blocks of K_; false: one is not positive definite
+  // The frames and the axis blocks of R^T K R at x, factored; false: one is
+  // not positive definite.
+  bool factor_axes(const Model& m, const Vec3* x, double shift);
   using Sparse = Eigen::SparseMatrix<double>;
   std::uint64_t revision_ = ~std::uint64_t(0);
   std::size_t capacity_ = 0;
@@ -67,15 +76,16 @@ class NewtonSystem {
   Sparse K_;                       // lower triangle
   struct Axis {
     Sparse A;                      // K_'s diagonal block, lower triangle
-    std::vector<int> prefix;       // per column: how many of K_'s entries (the first) are A's
-    Eigen::SimplicialLDLT<Sparse, Eigen::Lower> ldlt;
+    Eigen::SimplicialLDLT<Sparse, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt;  // rows already in AMD order
   };
   std::array<Axis, 3> axis_;
-  bool analysed_ = false, factored_ = false;
+  std::vector<ParticleId> framed_;  // particles with a frame of their own
+  std::vector<Mat3> frames_;        // their frames (columns: the local axes)
+  bool analysed_ = false, factored_ = false, factor_ok_ = false;
   double factored_shift_ = -1;
   int last_iterations_ = 0;
   std::uint64_t analyses_ = 0, factorizations_ = 0, iterations_ = 0;
-  Eigen::VectorXd b_, x_, r_, z_, p_, q_;
+  Eigen::VectorXd b_, x_, r_, z_, p_, q_, t_;
 };
 
 }  // namespace tendril
