@@ -13,6 +13,9 @@ namespace {
 // makes the next one factor the axis blocks again at its positions.
 constexpr int kRefactorAfter = 20;
 constexpr int kMaxIterations = 1000;
+// The entries of a particle's own block in the lower triangle: (a, b) and
+// (b, a) are one entry, whichever row is larger.
+constexpr int kPairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 0}, {2, 0}, {2, 1}};
 
 // K_e of a bar at x; false for a slack cable (no force, no stiffness).
 bool bar_tangent(const Bar& b, const Vec3* x, Mat3& Ke) {
@@ -128,6 +131,25 @@ void NewtonSystem::build_pattern(const Model& m) {
                     std::equal(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros(), K_.innerIndexPtr());
   K_ = std::move(K);
   revision_ = m.revision;
+  // Where each bar's and each particle's entries sit in K_'s values, so
+  // that assembling is a scatter without searches (binary searches per
+  // entry took 11 % of the time on the 128 x 128 net).
+  auto slot = [&](int r, int c) -> int {
+    if (r < 0 || c < 0) return -1;
+    if (c > r) std::swap(r, c);
+    const int* inner = K_.innerIndexPtr();
+    return int(std::lower_bound(inner + K_.outerIndexPtr()[c], inner + K_.outerIndexPtr()[c + 1], r) - inner);
+  };
+  own_slot_.assign(6 * capacity_, -1);
+  for (ParticleId p = 0; p < capacity_; ++p)
+    for (int k = 0; k < 6; ++k)
+      own_slot_[6 * p + k] = slot(row_[3 * p + kPairs[k][0]], row_[3 * p + kPairs[k][1]]);
+  bar_slot_.assign(9 * m.bars.awake, -1);
+  for (std::size_t e = 0; e < m.bars.awake; ++e) {
+    const Bar& b = m.bars[e];
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c) bar_slot_[9 * e + 3 * a + c] = slot(row_[3 * b.i + a], row_[3 * b.j + c]);
+  }
   for (Eigen::VectorXd* v : {&b_, &x_, &r_, &z_, &p_, &q_, &t_}) v->resize(rows_);
   if (same) return;
   // Each axis block: in every column of K_ the rows of its own axis come
@@ -151,25 +173,24 @@ void NewtonSystem::build_pattern(const Model& m) {
 
 void NewtonSystem::assemble(const Model& m, const Vec3* x, double shift) {
   if (revision_ != m.revision || capacity_ != m.particles.capacity()) build_pattern(m);
-  std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
-  auto add = [&](ParticleId p, ParticleId q, const Mat3& k) {  // k into the lower part of block (p, q)
-    for (int a = 0; a < 3; ++a) {
-      const int r = row_[3 * p + a];
-      if (r < 0) continue;
-      for (int b = 0; b < 3; ++b) {
-        const int c = row_[3 * q + b];
-        if (c >= 0 && c <= r) K_.coeffRef(r, c) += k(a, b);
-      }
-    }
+  double* v = K_.valuePtr();
+  std::fill(v, v + K_.nonZeros(), 0.0);
+  auto own = [&](ParticleId p, const Mat3& k) {
+    const int* at = &own_slot_[6 * std::size_t(p)];
+    for (int n = 0; n < 6; ++n)
+      if (at[n] >= 0) v[at[n]] += k(kPairs[n][0], kPairs[n][1]);
   };
-  for (const Bar* bp = m.bars.awake_begin(); bp != m.bars.awake_end(); ++bp) {
-    const Bar& b = *bp;
+  const Bar* bars = m.bars.awake_begin();
+  for (std::size_t e = 0; e < m.bars.awake; ++e) {
+    const Bar& b = bars[e];
     Mat3 Ke;
     if (!bar_tangent(b, x, Ke)) continue;
-    add(b.i, b.i, Ke);
-    add(b.j, b.j, Ke);
-    add(b.j, b.i, -Ke);  // ij and ji: the lower triangle holds whichever has the larger row
-    add(b.i, b.j, -Ke);
+    own(b.i, Ke);
+    own(b.j, Ke);
+    const int* at = &bar_slot_[9 * e];  // -Ke on the pair's block, wherever it falls in the lower triangle
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c)
+        if (at[3 * a + c] >= 0) v[at[3 * a + c]] -= Ke(a, c);
   }
   if (shift > 0)
     for (int c = 0; c < rows_; ++c) K_.coeffRef(c, c) *= 1 + shift;

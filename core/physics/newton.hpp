@@ -74,6 +74,8 @@ class NewtonSystem {
   std::array<int, 4> offset_{};    // axis a's rows: [offset_[a], offset_[a + 1])
   int rows_ = 0;
   Sparse K_;                       // lower triangle
+  std::vector<int> own_slot_;      // per particle: its block's 6 entries in K_'s values, or -1
+  std::vector<int> bar_slot_;      // per awake bar: the 9 entries of its (i, j) block, or -1
   struct Axis {
     Sparse A;                      // K_'s diagonal block, lower triangle
     Eigen::SimplicialLDLT<Sparse, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt;  // rows already in AMD order
