@@ -32,6 +32,46 @@ bool bar_tangent(const Bar& b, const Vec3* x, Mat3& Ke) {
   return true;
 }
 
+// K of an anchor, plane, line or length goal (goal_force in
+// element_forces.hpp: w I, w d d^T / |d|^2, w (I - d d^T / |d|^2), and a
+// two-way bar of stiffness w); false when it does not act (a passive
+// particle).
+bool goal_tangent(const Goal& g, const std::uint8_t* active, const Vec3* x, Mat3& K) {
+  if (!active[g.i] || (g.j != kNone && !active[g.j])) return false;
+  const double w = g.weight;
+  switch (g.kind) {
+    case Goal::Anchor: K = w * Mat3::Identity(); return true;
+    case Goal::Plane: K = (w / g.direction.squaredNorm()) * (g.direction * g.direction.transpose()); return true;
+    case Goal::Line:
+      K = w * (Mat3::Identity() - g.direction * g.direction.transpose() / g.direction.squaredNorm());
+      return true;
+    case Goal::Length: {
+      const Vec3 d = x[g.j] - x[g.i];
+      const double l = d.norm(), T = w * (l - g.length);
+      if (!(l > 0)) {
+        K = w * Mat3::Identity();
+        return true;
+      }
+      const Vec3 n = d / l;
+      K = (w - T / l) * (n * n.transpose()) + (T / l) * Mat3::Identity();
+      return true;
+    }
+    case Goal::Planar:
+    case Goal::Rigid: break;  // refused by unsupported()
+  }
+  return false;
+}
+
+// Every element's tangent but the bars': visit(i, j, K), K on ii and jj and
+// -K on ij, j = kNone for a term on i alone.
+template <class Visit>
+void other_tangents(const Model& m, const Vec3* x, Visit&& visit) {
+  for (const Goal& g : m.goals) {
+    Mat3 K;
+    if (goal_tangent(g, m.particles.active.data(), x, K)) visit(g.i, g.kind == Goal::Length ? g.j : kNone, K);
+  }
+}
+
 // The frame of a particle whose own block K_pp has one clearly softest
 // direction (a membrane's normal): that direction as the third axis, the
 // global x (or y) projected off it as the first. False: no such direction
@@ -60,7 +100,10 @@ const char* NewtonSystem::unsupported(const Model& m) {
   if (m.beam6s.awake > 0) return "6-DOF beams";
   if (m.csts.awake > 0) return "CST membranes";
   if (!m.joints.items.empty()) return "rotational joints";
-  if (!m.goals.empty()) return "goals";
+  for (const Goal& g : m.goals) {
+    if (g.kind == Goal::Planar) return "planarity goals";
+    if (g.kind == Goal::Rigid) return "rigid-body goals";
+  }
   for (Dart d : m.clamp_darts.raw())
     if (m.clamp_acts(d)) return "clamps";
   for (const RigidJoint& j : m.rigid_joints.raw())
@@ -96,6 +139,13 @@ void NewtonSystem::build_pattern(const Model& m) {
       t.emplace_back(ri - o, rj - o, 1.0);
       t.emplace_back(rj - o, ri - o, 1.0);
     }
+    for (const Goal& g : m.goals) {
+      if (g.kind != Goal::Length) continue;
+      const int ri = row_[3 * g.i + a], rj = row_[3 * g.j + a];
+      if (ri < 0 || rj < 0) continue;
+      t.emplace_back(ri - o, rj - o, 1.0);
+      t.emplace_back(rj - o, ri - o, 1.0);
+    }
     Sparse A(n, n);
     A.setFromTriplets(t.begin(), t.end());
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
@@ -123,6 +173,8 @@ void NewtonSystem::build_pattern(const Model& m) {
     block(b->i, b->j);
     block(b->j, b->i);
   }
+  for (const Goal& g : m.goals)
+    if (g.kind == Goal::Length) block(g.i, g.j), block(g.j, g.i);
   Sparse K(rows_, rows_);
   K.setFromTriplets(t.begin(), t.end());
   K.makeCompressed();
@@ -192,6 +244,24 @@ void NewtonSystem::assemble(const Model& m, const Vec3* x, double shift) {
       for (int c = 0; c < 3; ++c)
         if (at[3 * a + c] >= 0) v[at[3 * a + c]] -= Ke(a, c);
   }
+  // Goals are few: entry by entry (a binary search each).
+  auto add = [&](ParticleId p, ParticleId q, const Mat3& k) {  // k into the lower part of block (p, q)
+    for (int a = 0; a < 3; ++a) {
+      const int r = row_[3 * p + a];
+      if (r < 0) continue;
+      for (int b = 0; b < 3; ++b) {
+        const int c = row_[3 * q + b];
+        if (c >= 0 && c <= r) K_.coeffRef(r, c) += k(a, b);
+      }
+    }
+  };
+  other_tangents(m, x, [&](ParticleId i, ParticleId j, const Mat3& k) {
+    add(i, i, k);
+    if (j == kNone) return;
+    add(j, j, k);
+    add(j, i, -k);
+    add(i, j, -k);
+  });
   if (shift > 0)
     for (int c = 0; c < rows_; ++c) K_.coeffRef(c, c) *= 1 + shift;
   if (shift != factored_shift_) factored_ = false;
@@ -213,6 +283,10 @@ bool NewtonSystem::factor_axes(const Model& m, const Vec3* x, double shift) {
     own[bp->i] += Ke;
     own[bp->j] += Ke;
   }
+  other_tangents(m, x, [&](ParticleId i, ParticleId j, const Mat3& k) {
+    own[i] += k;
+    if (j != kNone) own[j] += k;
+  });
   framed_.clear();
   frames_.clear();
   std::vector<int> frame_of(capacity_, -1);
@@ -247,6 +321,16 @@ bool NewtonSystem::factor_axes(const Model& m, const Vec3* x, double shift) {
       add(a, b.i, b.j, -ei.dot(Ke * ej));
     }
   }
+  other_tangents(m, x, [&](ParticleId i, ParticleId j, const Mat3& k) {
+    for (int a = 0; a < 3; ++a) {
+      const Vec3 ei = axis_dir(i, a);
+      add(a, i, i, ei.dot(k * ei));
+      if (j == kNone) continue;
+      const Vec3 ej = axis_dir(j, a);
+      add(a, j, j, ej.dot(k * ej));
+      add(a, i, j, -ei.dot(k * ej));
+    }
+  });
   for (int a = 0; a < 3; ++a) {
     Axis& s = axis_[a];
     if (s.A.rows() == 0) continue;

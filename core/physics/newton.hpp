@@ -5,9 +5,11 @@
 // K dx = F. Per bar or cable, with d = x_j - x_i, l = |d|, n = d / l and T
 // its force (eq. 3.32; a slack cable none):
 //   K_e = (EA / L) n n^T + (T / l) (I - n n^T)
-// on the blocks ii and jj, -K_e on ij and ji. Loads and gravity do not
-// depend on positions and add nothing. Only bars and cables have a tangent
-// here: unsupported() names the first element kind a model has beyond them.
+// on the blocks ii and jj, -K_e on ij and ji. Goals (elements.hpp): an
+// anchor w I, a plane w d d^T / |d|^2, a line w (I - d d^T / |d|^2), a
+// length a two-way bar of stiffness w. Loads and gravity do not depend on
+// positions and add nothing. Nothing else has a tangent here:
+// unsupported() names the first element kind a model has beyond them.
 //
 // K dx = F is solved by conjugate gradients preconditioned with the exact
 // sparse LDL^T factors of three scalar blocks of K: its x, y and z blocks,

@@ -46,8 +46,9 @@ const char* damping_name(Damping d);
 // mixed_implicit) near it (5.4.2.2).
 // Newton is static: each step one Newton iteration on the residual with the
 // exact tangent stiffness and a line search (newton.hpp, newton_step.cpp);
-// no masses, velocities zero. Bars and cables only: a model with any other
-// element refuses it with an error naming the element kind.
+// no masses, velocities zero. Bars, cables and anchor, plane, line and
+// length goals only: a model with any other element refuses it with an
+// error naming the element kind.
 enum class Integrator { Leapfrog, SymplecticEuler, VelocityVerlet, Midpoint, RK4, VariationalImplicitEuler,
                         ProjectiveDynamics, Mixed, Newton };
 // The explicit integrators (eq. 3.9-3.25).

@@ -1,10 +1,10 @@
 // The static Newton solver (integrator "newton", newton.hpp): its tangent
 // is the derivative of the forces, it reaches the equilibrium the explicit
 // and projective solvers reach (prestressed net, a net with a slack cable,
-// locked axes), follows topology changes between steps, keeps its symbolic
-// analysis while the pattern holds, refuses elements it has no tangent for,
-// says so when it cannot converge, and gives the same numbers on any
-// thread count.
+// locked axes, anchor, plane, line and length goals), follows topology
+// changes between steps, keeps its symbolic analysis while the pattern
+// holds, refuses elements it has no tangent for, says so when it cannot
+// converge, and gives the same numbers on any thread count.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -49,7 +49,7 @@ RunResult relax(Solver& s, Integrator i, double tolerance, std::uint64_t steps =
 
 }  // namespace
 
-TEST_CASE("newton: the tangent equals the central differences of the forces (bars, a slack cable, locked axes)") {
+TEST_CASE("newton: the tangent equals the central differences of the forces (bars, a slack cable, goals, locked axes)") {
   Model m;
   const ParticleId a = m.add_particle(Vec3(0, 0, 0)), b = m.add_particle(Vec3(1.1, 0.2, 0.3)),
                    c = m.add_particle(Vec3(0.1, 0.9, -0.2)), d = m.add_particle(Vec3(1.2, 1.1, 0.4));
@@ -60,15 +60,26 @@ TEST_CASE("newton: the tangent equals the central differences of the forces (bar
   m.add_cable(a, c, Section{5e2, 0, 10, 0}, 0.8);         // taut
   m.add_cable(c, d, Section{5e2, 0, 0, 0}, 2.0);          // slack: no stiffness
   m.add_elastic_bar(c, b, Section{8e2, 0, 0, 0}, 1.0);
+  const ParticleId e = m.add_particle(Vec3(0.7, 1.6, 0.9));
+  m.add_cable(d, e, Section{3e2, 0, 20, 0}, 0.9);
+  auto goal = [&](Goal::Kind k, ParticleId i, ParticleId j, Vec3 point, Vec3 direction, double length, double w) {
+    Goal g;
+    g.kind = k, g.i = i, g.j = j, g.point = point, g.direction = direction, g.length = length, g.weight = w;
+    m.add_goal(g);
+  };
+  goal(Goal::Anchor, b, kNone, Vec3(1, 0.1, 0.2), Vec3::Zero(), 0, 300);
+  goal(Goal::Plane, d, kNone, Vec3(1, 1, 0), Vec3(0.2, -0.3, 1.5), 0, 400);
+  goal(Goal::Line, e, kNone, Vec3(0, 1.5, 1), Vec3(1, 0.5, -0.2), 0, 250);
+  goal(Goal::Length, b, e, Vec3::Zero(), Vec3::Zero(), 1.3, 500);  // stretched
   Solver s(m);
   NewtonSystem K;
   K.assemble(m, m.particles.position.data(), 0);
   const Eigen::SparseMatrix<double> lower = K.tangent();
   const Eigen::MatrixXd full = Eigen::MatrixXd(lower).selfadjointView<Eigen::Lower>();
-  CHECK(K.rows() == 3 + 3 + 2);  // b and d free, c in x and y
+  CHECK(K.rows() == 3 + 3 + 2 + 3);  // b, d and e free, c in x and y
   const double h = 1e-6;
   double worst = 0, scale = 0;
-  for (ParticleId q : {b, c, d})
+  for (ParticleId q : {b, c, d, e})
     for (int axis = 0; axis < 3; ++axis) {
       const int col = K.row(q, axis);
       if (col < 0) continue;
@@ -81,7 +92,7 @@ TEST_CASE("newton: the tangent equals the central differences of the forces (bar
       s.compute_forces();
       minus.assign(m.particles.force.begin(), m.particles.force.end());
       x[axis] += h;
-      for (ParticleId p : {b, c, d})
+      for (ParticleId p : {b, c, d, e})
         for (int r = 0; r < 3; ++r) {
           const int row = K.row(p, r);
           if (row < 0) continue;
@@ -172,6 +183,29 @@ TEST_CASE("newton: topology changes between steps, the symbolic analysis kept wh
   Solver sl(l);
   REQUIRE(relax(sl, Integrator::Leapfrog, 1e-7).converged);
   CHECK(largest_distance(m, l) < 1e-8);
+}
+
+TEST_CASE("newton: a net held by anchor, plane, line and length goals reaches Leapfrog's equilibrium") {
+  auto build = [](Model& m) {
+    const std::vector<ParticleId> g = net(m, 8, 2.0);
+    auto goal = [&](Goal::Kind k, ParticleId i, ParticleId j, Vec3 point, Vec3 direction, double length) {
+      Goal x;
+      x.kind = k, x.i = i, x.j = j, x.point = point, x.direction = direction, x.length = length, x.weight = 2e3;
+      m.add_goal(x);
+    };
+    goal(Goal::Anchor, g[2 * 8 + 2], kNone, Vec3(2, 2, 0.5), Vec3::Zero(), 0);
+    goal(Goal::Plane, g[5 * 8 + 5], kNone, Vec3(0, 0, -1), Vec3(0.1, 0, 1), 0);
+    goal(Goal::Line, g[2 * 8 + 5], kNone, Vec3(5, 2, 0), Vec3(1, 1, 0.3), 0);
+    goal(Goal::Length, g[4 * 8 + 1], g[4 * 8 + 6], Vec3::Zero(), Vec3::Zero(), 4.5);
+  };
+  Model mn, ml;
+  build(mn), build(ml);
+  Solver sn(mn), sl(ml);
+  const RunResult rn = relax(sn, Integrator::Newton, 1e-9, 50);
+  REQUIRE(rn.converged);
+  REQUIRE(relax(sl, Integrator::Leapfrog, 1e-7).converged);
+  MESSAGE("newton " << rn.steps << " steps; newton - leapfrog " << largest_distance(mn, ml) << " m");
+  CHECK(largest_distance(mn, ml) < 1e-9);
 }
 
 TEST_CASE("newton: elements without a tangent are refused by name, nothing moved") {
