@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "command/declare.hpp"
+#include "physics/shell_bending.hpp"
 
 namespace tendril::command {
 
@@ -89,6 +90,33 @@ void declare_goals(std::vector<Command>& out) {
                    return r;
                  }});
   out.back().lua = "";  // m:rigid(particles, weight), m:goal{kind = "rigid", ...} (grammar/lua_goals.cpp)
+  out.push_back({"bend", "a bending hinge of a triangulated surface flat at rest: edge i-j between triangles (i, j, k) and "
+                         "(i, j, l), its weights from their shape now (isometric bending)",
+                 Effect::Setting,
+                 {{"D", Type::Number, "the plate's bending stiffness E t^3 / 12 (1 - nu^2) [N m]", {0, kInf, true}},
+                  {"hinge", Type::Particles, "i and j (the edge), k and l (the corners opposite it)"}},
+                 Returns::Goal, [](Target& t, Args& a) {
+                   const std::vector<std::uint32_t>& c = a[1].ids;
+                   if (c.size() != 4) throw ArgumentError(1, "needs four particles, got " + std::to_string(c.size()));
+                   for (std::uint32_t p : c) t.model.require_particle(p, "bend");
+                   const Vec3* x = t.model.particles.position.data();
+                   BendHinge h;
+                   if (!bend_hinge(x[c[0]], x[c[1]], x[c[2]], x[c[3]], h))
+                     throw ModelError("bend: the triangles (" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " +
+                                      std::to_string(c[2]) + ") and (" + std::to_string(c[0]) + ", " +
+                                      std::to_string(c[1]) + ", " + std::to_string(c[3]) + ") must not be degenerate");
+                   Goal g;
+                   g.kind = Goal::Bend;
+                   g.i = c[0], g.j = c[1], g.k = c[2], g.l = c[3];
+                   g.hinge = h.K;
+                   g.hinge_area = h.area;
+                   g.weight = a[0].number;
+                   Result r;
+                   r.kind = Returns::Goal;
+                   r.index = t.model.add_goal(g);
+                   return r;
+                 }});
+  out.back().lua = "";  // m:bend(hinge, D) (grammar/lua_goals.cpp)
   out.push_back({"goal_weight", "sets a goal's weight", Effect::Setting,
                  {{"goal", Type::Goal, "a goal"}, {"weight", Type::Number, "[N/m]", {0, kInf, true}}}, Returns::Nothing,
                  [](Target& t, Args& a) {

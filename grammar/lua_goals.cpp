@@ -44,8 +44,9 @@ int l_goal(lua_State* L) {
   check_keys(L, 2, fn, {"kind", "particle", "particles", "point", "normal", "direction", "length", "weight"});
   Goal g;
   const std::string kind = field_string(L, 2, "kind", fn, "");
-  if (!parse_goal_kind(kind, g.kind))
-    key_error(fn, "kind", "must be \"anchor\", \"plane\", \"line\", \"length\", \"planar\" or \"rigid\", got \"" + kind + "\"");
+  if (!parse_goal_kind(kind, g.kind) || g.kind == Goal::Bend)
+    key_error(fn, "kind", "must be \"anchor\", \"plane\", \"line\", \"length\", \"planar\" or \"rigid\", got \"" + kind + "\"" +
+                              (kind == "bend" ? " (a bending hinge: m:bend)" : ""));
   if (!has_field(L, 2, "weight")) key_error(fn, "weight", "is required [N/m]");
   g.weight = field_number(L, 2, "weight", fn, 0);
   if (g.kind == Goal::Rigid) {  // the rigid command
@@ -111,10 +112,24 @@ int l_rigid(lua_State* L) {
                                          fn));
 }
 
+// m:bend({i, j, k, l}, D): a bending hinge on edge i-j between the
+// triangles (i, j, k) and (i, j, l), flat at rest.
+int l_bend(lua_State* L) {
+  const char* fn = "bend";
+  Scene& s = check_scene(L, fn);
+  const std::vector<ParticleId> ps = check_particle_list(L, 2, s, fn);
+  if (ps.size() != 4) arg_error(fn, 2, "expected the edge's two particles and the two opposite it, got " + std::to_string(ps.size()));
+  using command::Value;
+  return push_result(L, s, apply_command(L, s, "bend",
+                                         {Value::of_number(check_number(L, 3, fn)), Value::of_ids({ps.begin(), ps.end()})},
+                                         fn));
+}
+
 }  // namespace
 
 void add_goal_methods(lua_State* L) {
   set_fn<l_anchor>(L, "anchor");
+  set_fn<l_bend>(L, "bend");
   set_fn<l_rigid>(L, "rigid");
   set_fn<l_planarity>(L, "planarity");
   set_fn<l_goal>(L, "goal");

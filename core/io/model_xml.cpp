@@ -624,7 +624,7 @@ std::string write_document(const Model& m, const SolverSettings& s) {
         continue;
       }
       w.attr("i", dense[g.i]);
-      if (g.kind == Goal::Planar) {
+      if (g.kind == Goal::Planar || g.kind == Goal::Bend) {
         w.attr("j", dense[g.j]);
         w.attr("k", dense[g.k]);
         w.attr("l", dense[g.l]);
@@ -635,6 +635,13 @@ std::string write_document(const Model& m, const SolverSettings& s) {
         w.attr("x", g.point.x());
         w.attr("y", g.point.y());
         w.attr("z", g.point.z());
+      }
+      if (g.kind == Goal::Bend) {  // the corners' cotangent weights and the triangles' area
+        w.attr("ci", g.hinge[0]);
+        w.attr("cj", g.hinge[1]);
+        w.attr("ck", g.hinge[2]);
+        w.attr("cl", g.hinge[3]);
+        w.attr("area", g.hinge_area);
       }
       if (g.kind == Goal::Plane || g.kind == Goal::Line) {
         w.attr("dx", g.direction.x());
@@ -1268,7 +1275,7 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
         r.element = c;
         Goal& g = r.goal;
         const char* kind = a.raw("kind");
-        if (!kind || !parse_goal_kind(kind, g.kind)) a.bad("kind", "must be anchor, plane, line, length, planar or rigid");
+        if (!kind || !parse_goal_kind(kind, g.kind)) a.bad("kind", "must be anchor, plane, line, length, planar, rigid or bend");
         if (g.kind == Goal::Rigid) {  // <member p x y z/>: a particle and its rest offset
           g.weight = a.real("weight");
           a.done();
@@ -1285,7 +1292,7 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
           continue;
         }
         g.i = a.index("i");
-        if (g.kind == Goal::Planar) {
+        if (g.kind == Goal::Planar || g.kind == Goal::Bend) {
           g.j = a.index("j");
           g.k = a.index("k");
           g.l = a.index("l");
@@ -1294,6 +1301,10 @@ Document Reader::read(const tinyxml2::XMLDocument& doc) const {
           g.length = a.real("length");
         } else {
           g.point = Vec3(a.real("x"), a.real("y"), a.real("z"));
+        }
+        if (g.kind == Goal::Bend) {
+          g.hinge = {a.real("ci"), a.real("cj"), a.real("ck"), a.real("cl")};
+          g.hinge_area = a.real("area");
         }
         if (g.kind == Goal::Plane || g.kind == Goal::Line) g.direction = Vec3(a.real("dx"), a.real("dy"), a.real("dz"));
         g.weight = a.real("weight");
@@ -1527,12 +1538,12 @@ void build(const Reader& reader, const Document& d, Model& m) {
     auto i = id_of.find(g.i);
     if (i == id_of.end()) reader.fail(r.element, "attribute 'i': no particle " + std::to_string(g.i));
     g.i = i->second;
-    if (g.kind == Goal::Length || g.kind == Goal::Planar) {
+    if (g.kind == Goal::Length || g.kind == Goal::Planar || g.kind == Goal::Bend) {
       auto j = id_of.find(g.j);
       if (j == id_of.end()) reader.fail(r.element, "attribute 'j': no particle " + std::to_string(g.j));
       g.j = j->second;
     }
-    if (g.kind == Goal::Planar) {
+    if (g.kind == Goal::Planar || g.kind == Goal::Bend) {
       for (auto [name, q] : {std::pair<const char*, ParticleId*>{"k", &g.k}, {"l", &g.l}}) {
         auto it = id_of.find(*q);
         if (it == id_of.end()) reader.fail(r.element, std::string("attribute '") + name + "': no particle " + std::to_string(*q));

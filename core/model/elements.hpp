@@ -1,6 +1,7 @@
 #pragma once
 // Element buffers derived from the map. Each element remembers one dart of the
 // cell it belongs to, so a swap-remove can re-point that cell in O(1).
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <string>
@@ -88,19 +89,25 @@ struct Cst {
 // positions by the best rotation about their centroid (shape matching,
 // physics/rigid_body.hpp); i is members[0]. The explicit integrators read it as a spring of
 // stiffness `weight` to the same projection (into S, eq. 3.4), so every
-// integrator honours it. goals.cpp.
+// integrator honours it. Bend: the hinge of edge i-j between the triangles
+// (i, j, k) and (i, j, l) of a surface flat at rest, with the corners'
+// cotangent weights `hinge`, the two triangles' area `hinge_area` and the
+// plate's bending stiffness D [N m] as its weight (physics/shell_bending.hpp).
+// goals.cpp.
 struct Goal {
-  enum Kind : std::uint8_t { Anchor, Plane, Line, Length, Planar, Rigid };
+  enum Kind : std::uint8_t { Anchor, Plane, Line, Length, Planar, Rigid, Bend };
   Kind kind = Anchor;
   ParticleId i = kNone, j = kNone;  // j: Length and Planar
-  ParticleId k = kNone, l = kNone;  // Planar only
+  ParticleId k = kNone, l = kNone;  // Planar and Bend only
   Vec3 point = Vec3::Zero(), direction = Vec3::Zero();
   double length = 0;
   double weight = 0;
   std::vector<ParticleId> members;  // Rigid only
   std::vector<Vec3> rest;           // Rigid: each member's offset from the rest centroid [m]
+  std::array<double, 4> hinge{};    // Bend: the cotangent weights of i, j, k, l
+  double hinge_area = 0;            // Bend: the two triangles' area [m^2]
 };
-const char* goal_kind_name(Goal::Kind k);  // "anchor", "plane", "line", "length", "planar", "rigid"
+const char* goal_kind_name(Goal::Kind k);  // "anchor", "plane", "line", "length", "planar", "rigid", "bend"
 bool parse_goal_kind(const std::string& name, Goal::Kind& out);
 
 // A flat element buffer, partitioned for multi-resolution (thesis 5.5.2.3):

@@ -16,12 +16,13 @@ const char* goal_kind_name(Goal::Kind k) {
     case Goal::Length: return "length";
     case Goal::Planar: return "planar";
     case Goal::Rigid: return "rigid";
+    case Goal::Bend: return "bend";
   }
   return "?";
 }
 
 bool parse_goal_kind(const std::string& name, Goal::Kind& out) {
-  for (Goal::Kind k : {Goal::Anchor, Goal::Plane, Goal::Line, Goal::Length, Goal::Planar, Goal::Rigid})
+  for (Goal::Kind k : {Goal::Anchor, Goal::Plane, Goal::Line, Goal::Length, Goal::Planar, Goal::Rigid, Goal::Bend})
     if (name == goal_kind_name(k)) {
       out = k;
       return true;
@@ -79,7 +80,7 @@ std::size_t Model::add_goal(Goal g) {
   require_particle(g.i, fn.c_str());
   if (g.kind == Goal::Rigid) {
     // i, j, k, l unused but i: the first member (activity checks read it)
-  } else if (g.kind == Goal::Planar) {
+  } else if (g.kind == Goal::Planar || g.kind == Goal::Bend) {
     const ParticleId c[4] = {g.i, g.j, g.k, g.l};
     for (int a = 1; a < 4; ++a) require_particle(c[a], fn.c_str());
     for (int a = 0; a < 4; ++a)
@@ -95,13 +96,23 @@ std::size_t Model::add_goal(Goal g) {
     if (!g.point.allFinite()) throw ModelError(fn + ": the point is not finite");
   }
   if (g.kind == Goal::Rigid) g.j = kNone;
-  if (g.kind != Goal::Planar) g.k = g.l = kNone;
+  if (g.kind != Goal::Planar && g.kind != Goal::Bend) g.k = g.l = kNone;
+  if (g.kind == Goal::Bend) {
+    for (double k : g.hinge)
+      if (!std::isfinite(k)) throw ModelError(fn + ": a cotangent weight is not finite (a degenerate triangle)");
+    if (!(g.hinge_area > 0) || !std::isfinite(g.hinge_area))
+      throw ModelError(fn + ": the two triangles' area must be > 0 [m^2]");
+  } else {
+    g.hinge = {};
+    g.hinge_area = 0;
+  }
   if (g.kind == Goal::Plane || g.kind == Goal::Line) {
     const double n = g.direction.norm();
     if (!(n > 0) || !std::isfinite(n))
       throw ModelError(fn + ": the " + (g.kind == Goal::Plane ? "normal" : "direction") + " must be a non-zero vector");
   }
-  if (!(g.weight > 0) || !std::isfinite(g.weight)) throw ModelError(fn + ": the weight must be > 0 [N/m]");
+  if (!(g.weight > 0) || !std::isfinite(g.weight))
+    throw ModelError(fn + (g.kind == Goal::Bend ? ": the bending stiffness D must be > 0 [N m]" : ": the weight must be > 0 [N/m]"));
   ++revision;
   goals.push_back(g);
   return goals.size() - 1;

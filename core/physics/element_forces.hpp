@@ -189,6 +189,7 @@ inline GoalForce goal_force(const Goal& g, const Vec3* x, double gf) {
     }
     case Goal::Planar: break;  // four corners: physics/planarity.hpp
     case Goal::Rigid: break;   // its members: physics/rigid_body.hpp
+    case Goal::Bend: break;    // four corners: physics/shell_bending.hpp
   }
   return {};
 }

@@ -4,6 +4,7 @@
 #include "physics/element_forces.hpp"
 #include "physics/planarity.hpp"
 #include "physics/rigid_body.hpp"
+#include "physics/shell_bending.hpp"
 #include "physics/solver.hpp"
 
 namespace tendril {
@@ -22,6 +23,15 @@ void Solver::accumulate_goal_forces(const Vec3* x, Vec3* F, double* S) const {
       for (std::size_t a = 0; a < g.members.size(); ++a) {
         F[g.members[a]] += pulls[a];
         S[g.members[a]] += 2 * g.weight * (1 - 1 / n);
+      }
+      continue;
+    }
+    if (g.kind == Goal::Bend) {
+      if (!(active[g.k] & active[g.l])) continue;
+      const BendPulls f = bend_pulls(g, x);
+      for (int a = 0; a < 4; ++a) {
+        F[f.p[a]] += f.f[a];
+        S[f.p[a]] += f.k[a];
       }
       continue;
     }

@@ -4,6 +4,7 @@
 #include "physics/element_forces.hpp"
 #include "physics/planarity.hpp"
 #include "physics/rigid_body.hpp"
+#include "physics/shell_bending.hpp"
 
 namespace tendril {
 
@@ -84,6 +85,12 @@ void accumulate_projections(const Model& m, const Vec3* x, const Quat* q, double
       if (!members_active(g, active)) continue;
       rigid_pulls(g, x, pulls);
       for (std::size_t a = 0; a < g.members.size(); ++a) add(s, g.members[a], g.weight, pulls[a]);
+      continue;
+    }
+    if (g.kind == Goal::Bend) {  // each corner by its force over its row sum
+      if (!(active[g.k] & active[g.l])) continue;
+      const BendPulls f = bend_pulls(g, x);
+      for (int a = 0; a < 4; ++a) add(s, f.p[a], f.k[a], f.f[a]);
       continue;
     }
     if (g.kind == Goal::Planar) {  // each corner onto the best-fit plane, weight w

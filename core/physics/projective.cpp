@@ -77,6 +77,9 @@ void ProjectiveSystem::terms(const Model& m, const std::vector<int>& row, const 
         for (ParticleId b : g.members)
           if (row[b] >= 0) t(row[a], row[b], g.weight * ((a == b ? 1.0 : 0.0) - 1 / n));
       }
+    } else if (g.kind == Goal::Bend) {  // w K K^T: the hinge's energy, quadratic
+      add_term<4>(t, row, {g.i, g.j, g.k, g.l}, {g.hinge[0], g.hinge[1], g.hinge[2], g.hinge[3]},
+                  g.weight / g.hinge_area);
     } else if (g.kind == Goal::Planar) {  // w (I - 1 1^T / 4): the corners about their centroid
       const ParticleId c[4] = {g.i, g.j, g.k, g.l};
       for (int a = 0; a < 4; ++a) {

@@ -138,6 +138,8 @@ inline void apply_every_command(Recorded& r, const std::filesystem::path& base) 
   r.run("patch_prestress", {id(patch_a), num(3), num(1.5), id(warp_pairs), ids(warp_weft)});
   // Three patch particles as a rigid body.
   r.run("rigid", {num(1e3), ids({grid[0], grid[1], grid[3]})});
+  // A bending hinge on the patch's middle edge grid[1]-grid[4].
+  r.run("bend", {num(2), ids({grid[1], grid[4], grid[0], grid[2]})});
   Args form(10, none());
   form[0] = id(patch_a);
   form[1] = word("form");
