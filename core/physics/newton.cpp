@@ -57,7 +57,8 @@ bool goal_tangent(const Goal& g, const std::uint8_t* active, const Vec3* x, Mat3
       return true;
     }
     case Goal::Planar:
-    case Goal::Rigid: break;  // refused by unsupported()
+    case Goal::Rigid:
+    case Goal::Bend: break;  // refused by unsupported()
   }
   return false;
 }
@@ -103,6 +104,7 @@ const char* NewtonSystem::unsupported(const Model& m) {
   for (const Goal& g : m.goals) {
     if (g.kind == Goal::Planar) return "planarity goals";
     if (g.kind == Goal::Rigid) return "rigid-body goals";
+    if (g.kind == Goal::Bend) return "bending hinges";
   }
   for (Dart d : m.clamp_darts.raw())
     if (m.clamp_acts(d)) return "clamps";
