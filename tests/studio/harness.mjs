@@ -8,6 +8,9 @@ import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
+// Waits are scaled by TENDRIL_SLOW (5 under the sanitizers: tests/CMakeLists.txt).
+export const slow = Number(process.env.TENDRIL_SLOW || 1);
+
 const here = path.dirname(fileURLToPath(import.meta.url));
 export const root = path.resolve(here, '../..');
 const { chromium } = await import(path.join(root, 'web/node_modules/playwright-core/index.mjs'));
@@ -40,7 +43,7 @@ export async function startStudio(scenePath, args = []) {
   proc.stderr.on('data', (d) => { log += d; });
   const url = await new Promise((resolve, reject) => {
     let text = '';
-    const timer = setTimeout(() => reject(new Error('the studio printed no URL in 20 s:\n' + text + log)), 20000);
+    const timer = setTimeout(() => reject(new Error(`the studio printed no URL in ${20 * slow} s:\n` + text + log)), 20000 * slow);
     proc.stdout.on('data', (d) => {
       text += d;
       const m = text.match(/open (http:\/\/\S+)/);
@@ -80,13 +83,13 @@ export async function openPage(context, url) {
   const problems = [];
   page.on('pageerror', (e) => problems.push(e.message));
   await page.goto(url);
-  await page.waitForFunction(() => window.studio && window.studio.hello && window.studio.frame, null, { timeout: 30000 });
+  await page.waitForFunction(() => window.studio && window.studio.hello && window.studio.frame, null, { timeout: 30000 * slow });
   page.problems = problems;
   return page;
 }
 
 export async function until(page, fn, arg, timeout = 30000) {
-  return (await page.waitForFunction(fn, arg, { timeout, polling: 50 })).jsonValue();
+  return (await page.waitForFunction(fn, arg, { timeout: timeout * slow, polling: 50 })).jsonValue();
 }
 
 export async function screenshot(page, name) {
