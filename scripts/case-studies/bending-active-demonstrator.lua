@@ -24,8 +24,8 @@
 -- grillages of 3-DOF beams (docs/lua-api.md, "Bending strips"); the module
 -- a rigid body (m:rigid: shape matching, 6 DOF) of five particles hung from
 -- assembly A, 120 kg; the textile itself is left out. The
--- rough meshes are generated here, not drawn elsewhere (a mesh drawn in a
--- CAD tool would come in by m:import as a patch: docs/lua-api.md).
+-- rough meshes come from files (tendril.import), as a CAD tool would write
+-- them; ours were drawn by data/bending-active-demonstrator-targets.lua.
 -- Multi-resolution: the PQ step runs on the coarse mesh the strips are
 -- then built on; the fine mesh of the thesis (for its FE models) is not
 -- made.
@@ -44,61 +44,36 @@ local settle = { tolerance = variant.full and 1e-3 or 1e-2, max_steps = 400000 }
 local m = tendril.model{ integrator = "leapfrog" }
 m:gravity{ 0, 0, -9.81 }
 
--- (a) The rough targets: a strip's centre line is the parabola through its
--- two feet and the joint (where it crosses the others, at its middle); its
--- width turns about the centre line from `twist0` to `twist1` [rad], so
--- the surface is not developable.
-local function lerp(a, b, t) return { a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2]), a[3] + t * (b[3] - a[3]) } end
-local function sub(a, b) return { a[1] - b[1], a[2] - b[2], a[3] - b[3] } end
-local function cross(a, b) return { a[2] * b[3] - a[3] * b[2], a[3] * b[1] - a[1] * b[3], a[1] * b[2] - a[2] * b[1] } end
-local function unit(a) local l = math.sqrt(a[1]^2 + a[2]^2 + a[3]^2) return { a[1] / l, a[2] / l, a[3] / l } end
-
-local function rough(foot0, joint, foot1, twist0, twist1)
-  local control = { 2 * joint[1] - 0.5 * (foot0[1] + foot1[1]), 2 * joint[2] - 0.5 * (foot0[2] + foot1[2]),
-                    2 * joint[3] - 0.5 * (foot0[3] + foot1[3]) }
-  local grid = {}
-  for r = 0, across do grid[r + 1] = {} end
-  for c = 0, along do
-    local s = c / along
-    local x = lerp(lerp(foot0, control, s), lerp(control, foot1, s), s)
-    local tangent = unit(sub(lerp(control, foot1, s), lerp(foot0, control, s)))
-    local side = unit(cross({ 0, 0, 1 }, tangent))                -- horizontal, across the arch
-    local up = cross(tangent, side)
-    local phi = twist0 + s * (twist1 - twist0)
-    local w = { math.cos(phi) * side[1] + math.sin(phi) * up[1], math.cos(phi) * side[2] + math.sin(phi) * up[2],
-                math.cos(phi) * side[3] + math.sin(phi) * up[3] }
-    for r = 0, across do
-      local o = (r / across - 0.5) * width
-      grid[r + 1][c + 1] = { x[1] + o * w[1], x[2] + o * w[2], x[3] + o * w[3] }
-    end
-  end
-  return grid
-end
-
--- Assembly A (three strips over one joint) and B (two strips), feet on the
--- ground z = 0.
-local designs = {
-  { assembly = "A", feet = { { 0.0, 0.4, 0 }, { 5.2, 4.9, 0 } }, joint = { 2.6, 2.6, 5.4 }, twist = { -0.6, 0.8 } },
-  { assembly = "A", feet = { { 0.2, 4.6, 0 }, { 4.8, 0.2, 0 } }, joint = { 2.6, 2.6, 5.4 }, twist = { 0.7, -0.5 } },
-  { assembly = "A", feet = { { 0.0, 2.5, 0 }, { 5.4, 2.8, 0 } }, joint = { 2.6, 2.6, 5.4 }, twist = { 0.3, -0.3 } },
-  { assembly = "B", feet = { { 5.6, 0.0, 0 }, { 7.7, 5.4, 0 } }, joint = { 6.7, 2.7, 3.2 }, twist = { 0.2, -0.2 } },
-  { assembly = "B", feet = { { 7.7, 0.3, 0 }, { 5.6, 5.1, 0 } }, joint = { 6.7, 2.7, 3.2 }, twist = { -0.3, 0.3 } },
-}
-
--- Where the strips of an assembly cross they share one particle.
-local joints = { A = m:particle(designs[1].joint), B = m:particle(designs[4].joint) }
+-- (a) The rough targets, as the designers drew them: quad meshes read from
+-- data/bending-active-demonstrator-ALONG.obj, one group per strip (A1-A3,
+-- B1-B2) of 3 rows of ALONG + 1 vertices, its quads row by row, each a
+-- twisted arch (data/bending-active-demonstrator-targets.lua drew them).
+-- The two joints, where the strips of an assembly cross, are the file's
+-- first two vertices, shared by those strips: one particle each.
+local here = debug.getinfo(1, "S").source:match("^@(.*)/") or "."
+local drawn = tendril.import(string.format("%s/data/bending-active-demonstrator-%d.obj", here, along))
+local particle = {}
+for v, x in ipairs(drawn.vertices) do particle[v] = m:particle(x) end
+local joints = { A = particle[1], B = particle[2] }
 local strips = {}
-for k, d in ipairs(designs) do
-  local target = rough(d.feet[1], d.joint, d.feet[2], d.twist[1], d.twist[2])
-  local grid = {}
-  for r, row in ipairs(target) do
-    grid[r] = {}
-    for c, x in ipairs(row) do
-      grid[r][c] = (r == across / 2 + 1 and c == along / 2 + 1) and joints[d.assembly] or m:particle(x)
+for _, group in ipairs(drawn.groups) do
+  assert(#group.faces == across * along, group.name .. ": not a grid of " .. across .. " x " .. along .. " quads")
+  local index = {}
+  for r = 1, across + 1 do index[r] = {} end
+  for r = 1, across do
+    for c = 1, along do
+      local f = group.faces[(r - 1) * along + c]
+      index[r][c], index[r][c + 1], index[r + 1][c + 1], index[r + 1][c] = f[1], f[2], f[3], f[4]
     end
   end
-  strips[k] = { design = d, target = target, grid = grid }
+  local grid, target = {}, {}
+  for r = 1, across + 1 do
+    grid[r], target[r] = {}, {}
+    for c = 1, along + 1 do grid[r][c], target[r][c] = particle[index[r][c]], drawn.vertices[index[r][c]] end
+  end
+  strips[#strips + 1] = { design = { assembly = group.name:sub(1, 1) }, target = target, grid = grid }
 end
+local sub, cross, unit = case.sub, case.cross, case.unit
 
 -- (b) Planarisation: the mesh's edges as soft bars (a quad grid: they
 -- keep the quads' sizes, so the strip develops to its target's length), a

@@ -38,6 +38,14 @@ function case.beam_options(section, extra)
   return o
 end
 
+-- Vectors {x, y, z}: a - b, a x b, a / |a|.
+function case.sub(a, b) return { a[1] - b[1], a[2] - b[2], a[3] - b[3] } end
+function case.cross(a, b) return { a[2] * b[3] - a[3] * b[2], a[3] * b[1] - a[1] * b[3], a[1] * b[2] - a[2] * b[1] } end
+function case.unit(a)
+  local l = math.sqrt(a[1]^2 + a[2]^2 + a[3]^2)
+  return { a[1] / l, a[2] / l, a[3] / l }
+end
+
 -- The distance between two points {x, y, z}.
 function case.distance(x, y)
   return math.sqrt((x[1] - y[1])^2 + (x[2] - y[2])^2 + (x[3] - y[3])^2)
