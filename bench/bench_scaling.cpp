@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bench_util.hpp"
+#include "prestressed_net.hpp"
 #include "model/model.hpp"
 #include "physics/solver.hpp"
 
@@ -26,22 +27,7 @@ using namespace tendril::bench;
 
 namespace {
 
-constexpr double kLoad = 1.0;  // N per interior particle
-
-std::unique_ptr<Model> build_net(int s) {
-  auto m = std::make_unique<Model>();
-  std::vector<ParticleId> grid;
-  grid.reserve(std::size_t(s) * s);
-  for (int r = 0; r < s; ++r)
-    for (int c = 0; c < s; ++c) {
-      const ParticleId p = m->add_particle(Vec3(c, r, 0));
-      grid.push_back(p);
-      if (r == 0 || c == 0 || r == s - 1 || c == s - 1) m->set_lock(p, kLockTranslation);
-      else m->set_load(p, Vec3(0, 0, -kLoad));
-    }
-  m->add_quad_grid(grid, s, s, Section{1e5, 0, 1e3, 0});
-  return m;
-}
+constexpr double kLoad = 1.0;  // N per interior particle (prestressed_net.hpp)
 
 struct Variant {
   std::string label;
@@ -58,7 +44,7 @@ struct Outcome {
 };
 
 Outcome solve(int side, const Variant& v, double tolerance, double cap) {
-  auto model = build_net(side);
+  auto model = prestressed_net(side);
   Solver solver(*model);
   solver.settings.integrator = v.integrator;
   solver.settings.vie_iterations = v.iterations;
@@ -83,18 +69,6 @@ Outcome solve(int side, const Variant& v, double tolerance, double cap) {
   o.residual = solver.residual();
   o.work = solver.newton_work();
   return o;
-}
-
-std::vector<std::string> split(const std::string& list) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (start <= list.size()) {
-    std::size_t comma = list.find(',', start);
-    if (comma == std::string::npos) comma = list.size();
-    if (comma > start) out.push_back(list.substr(start, comma - start));
-    start = comma + 1;
-  }
-  return out;
 }
 
 // p of t = c n^p, least squares on the logarithms; NaN for fewer than two points.

@@ -161,18 +161,6 @@ Row measure(int side, const Variant& v, Change kind, int reps) {
   return row;
 }
 
-std::vector<std::string> split(const std::string& list) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (start <= list.size()) {
-    std::size_t comma = list.find(',', start);
-    if (comma == std::string::npos) comma = list.size();
-    if (comma > start) out.push_back(list.substr(start, comma - start));
-    start = comma + 1;
-  }
-  return out;
-}
-
 std::string ms(double s) { return fmt("%.2f ms", 1e3 * s); }
 
 int usage(const char* argv0, int code) {

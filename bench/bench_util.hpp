@@ -83,15 +83,22 @@ inline std::size_t parse_count(const std::string& s) {
   return static_cast<std::size_t>(std::llround(v));
 }
 
-inline std::vector<std::size_t> parse_sizes(const std::string& list) {
-  std::vector<std::size_t> out;
+// The items of a comma-separated list, empty ones left out.
+inline std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> out;
   std::size_t start = 0;
   while (start <= list.size()) {
     std::size_t comma = list.find(',', start);
     if (comma == std::string::npos) comma = list.size();
-    if (comma > start) out.push_back(parse_count(list.substr(start, comma - start)));
+    if (comma > start) out.push_back(list.substr(start, comma - start));
     start = comma + 1;
   }
+  return out;
+}
+
+inline std::vector<std::size_t> parse_sizes(const std::string& list) {
+  std::vector<std::size_t> out;
+  for (const std::string& item : split(list)) out.push_back(parse_count(item));
   if (out.empty()) throw std::runtime_error("--sizes needs a comma-separated list, e.g. 10K,100K,1M");
   return out;
 }
