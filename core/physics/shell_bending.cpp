@@ -27,36 +27,20 @@ bool bend_hinge(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, Bend
   return out.area > 0 && std::isfinite(out.area);
 }
 
-namespace {
-
-Vec3 mean_curvature_vector(const Goal& g, const Vec3* x, double& sum) {
-  const ParticleId p[4] = {g.i, g.j, g.k, g.l};
-  Vec3 v = Vec3::Zero();
-  sum = 0;
-  for (int a = 0; a < 4; ++a) {
-    v += g.hinge[a] * x[p[a]];
-    sum += std::abs(g.hinge[a]);
-  }
-  return v;
-}
-
-}  // namespace
-
 BendPulls bend_pulls(const Goal& g, const Vec3* x) {
   BendPulls out{{g.i, g.j, g.k, g.l}, {}, {}};
-  double sum;
-  const Vec3 v = mean_curvature_vector(g, x, sum);
+  Vec3 v = Vec3::Zero();  // the hinge's mean-curvature vector
+  double sum = 0;
+  for (int a = 0; a < 4; ++a) {
+    v += g.hinge[a] * x[out.p[a]];
+    sum += std::abs(g.hinge[a]);
+  }
   const double w = g.weight / g.hinge_area;
   for (int a = 0; a < 4; ++a) {
     out.f[a] = -w * g.hinge[a] * v;
     out.k[a] = w * std::abs(g.hinge[a]) * sum;
   }
   return out;
-}
-
-double bend_curvature(const Goal& g, const Vec3* x) {
-  double sum;
-  return std::sqrt(3.0) * mean_curvature_vector(g, x, sum).norm() / g.hinge_area;
 }
 
 }  // namespace tendril

@@ -44,9 +44,4 @@ struct BendPulls {
 // two triangles' area g.hinge_area, the plate's D as its weight: w = D / area.
 BendPulls bend_pulls(const Goal& g, const Vec3* x);
 
-// The hinge's curvature sqrt(3) |v| / (A_ijk + A_ijl) [1/m]: each hinge
-// stands for a third of its two triangles, and its energy is then
-// (1/2) D kappa^2 times that area.
-double bend_curvature(const Goal& g, const Vec3* x);
-
 }  // namespace tendril
