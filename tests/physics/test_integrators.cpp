@@ -299,7 +299,9 @@ TEST_CASE("integrators: viscous damping reaches the same equilibrium with every 
     RunResult r = s.run(1e-7, 1'000'000);
     REQUIRE(r.converged);
     MESSAGE(std::string(integrator_name(integrator)) << " + " << std::string(damping_name(damping)) << ": steps=" << r.steps);
-    return std::pair{m.particles.position[ps[3]], s.reaction(ps.front()) + s.reaction(ps.back())};
+    // Vec3 named: deduced, the sum would be an Eigen expression over the two
+    // reactions, temporaries gone by the time it is read (clang ASan read 5e-310).
+    return std::pair<Vec3, Vec3>{m.particles.position[ps[3]], s.reaction(ps.front()) + s.reaction(ps.back())};
   };
   const auto [reference, support] = solve(Integrator::Leapfrog, Damping::Kinetic);
   CHECK(support.y() == doctest::Approx(-50).epsilon(1e-6));
