@@ -10,10 +10,10 @@
 #   build-fuzz/tests/fuzz/fuzz_NAME FILE
 #   tools/fuzz.sh [SECONDS] [NAME...]     NAME: model_xml, journal, commands
 #   tools/fuzz.sh --ci [NAME...]          what tools/test.sh (and so CI) runs:
-#       a fixed number of inputs per target (14-22 s each on the 2-core
+#       a fixed number of inputs per target (15-25 s each on the 2-core
 #       machine) from a fixed random seed, starting from the seed corpus
-#       alone, so that the same commit always runs the same inputs: a run
-#       finds a new fault on the commit that brings it, not at random later.
+#       alone: the same work on any machine and mostly the same inputs
+#       (coverage that depends on the clock can steer two runs apart).
 # Each run ends with one line: executions, coverage (libFuzzer's cov: edges
 # and ft: features) and the corpus size.
 set -euo pipefail

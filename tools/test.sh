@@ -8,8 +8,7 @@
 #        LeakSanitizer (build-sanitize/): the same suite again; any report
 #        fails the test that caused it;
 #     3. the fuzzers (tools/fuzz.sh --ci): each from its seed corpus, for a
-#        fixed number of inputs from a fixed seed, so that a commit always
-#        runs the same inputs.
+#        fixed number of inputs from a fixed seed.
 #   tools/test.sh CTEST ARGS                phase 1 only, the tests selected (e.g. -R studio)
 #   tools/test.sh --sanitize [CTEST ARGS]   phase 2 only
 #   tools/test.sh --fuzz                    phase 3 only
