@@ -116,12 +116,7 @@ int main(int argc, char** argv) {
       else if (a == "--tolerance") tolerance = std::stod(value());
       else if (a == "--cap") cap = std::stod(value());
       else if (a == "--integrators") {
-        variants.clear();
-        for (const std::string& name : split(value())) {
-          auto it = std::find_if(known.begin(), known.end(), [&](const Variant& v) { return v.label == name; });
-          if (it == known.end()) throw std::runtime_error("unknown integrator '" + name + "'");
-          variants.push_back(*it);
-        }
+        variants = chosen_by_label(known, value());
       } else if (a == "-h" || a == "--help") return usage(argv[0], 0);
       else throw std::runtime_error("unknown option '" + a + "'");
     }

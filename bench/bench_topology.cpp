@@ -209,13 +209,7 @@ int main(int argc, char** argv) {
           else throw std::runtime_error("unknown change '" + name + "'");
         }
       } else if (a == "--integrators") {
-        std::vector<Variant> chosen;
-        for (const std::string& name : split(value())) {
-          auto it = std::find_if(variants.begin(), variants.end(), [&](const Variant& v) { return v.label == name; });
-          if (it == variants.end()) throw std::runtime_error("unknown integrator '" + name + "'");
-          chosen.push_back(*it);
-        }
-        variants = chosen;
+        variants = chosen_by_label(variants, value());
       } else if (a == "-h" || a == "--help") return usage(argv[0], 0);
       else throw std::runtime_error("unknown option '" + a + "'");
     }

@@ -96,6 +96,19 @@ inline std::vector<std::string> split(const std::string& list) {
   return out;
 }
 
+// The entries of `known` (anything with a `label`) named in a
+// comma-separated list, in the list's order; a name not known throws.
+template <class Variant>
+std::vector<Variant> chosen_by_label(const std::vector<Variant>& known, const std::string& list) {
+  std::vector<Variant> out;
+  for (const std::string& name : split(list)) {
+    auto it = std::find_if(known.begin(), known.end(), [&](const Variant& v) { return v.label == name; });
+    if (it == known.end()) throw std::runtime_error("unknown integrator '" + name + "'");
+    out.push_back(*it);
+  }
+  return out;
+}
+
 inline std::vector<std::size_t> parse_sizes(const std::string& list) {
   std::vector<std::size_t> out;
   for (const std::string& item : split(list)) out.push_back(parse_count(item));
