@@ -89,40 +89,29 @@ int l_goal(lua_State* L) {
   return push_goal(L, s, g, fn);
 }
 
-// m:planarity({a, b, c, d}, weight): the quad face onto its best-fit plane.
-int l_planarity(lua_State* L) {
-  const char* fn = "planarity";
+// m:NAME(particles, number): the command NAME of a number and particles
+// (planarity and bend: `count` of them, described by `which`; rigid: any).
+int particles_and_number(lua_State* L, const char* fn, std::size_t count, const char* which) {
   Scene& s = check_scene(L, fn);
   const std::vector<ParticleId> ps = check_particle_list(L, 2, s, fn);
-  if (ps.size() != 4) arg_error(fn, 2, "expected the quad's four corners, got " + std::to_string(ps.size()));
+  if (count > 0 && ps.size() != count)
+    arg_error(fn, 2, std::string("expected ") + which + ", got " + std::to_string(ps.size()));
   using command::Value;
-  return push_result(L, s, apply_command(L, s, "planarity",
+  return push_result(L, s, apply_command(L, s, fn,
                                          {Value::of_number(check_number(L, 3, fn)), Value::of_ids({ps.begin(), ps.end()})},
                                          fn));
 }
 
+// m:planarity({a, b, c, d}, weight): the quad face onto its best-fit plane.
+int l_planarity(lua_State* L) { return particles_and_number(L, "planarity", 4, "the quad's four corners"); }
+
 // m:rigid({p, q, r, ...}, weight): the particles as one rigid body.
-int l_rigid(lua_State* L) {
-  const char* fn = "rigid";
-  Scene& s = check_scene(L, fn);
-  const std::vector<ParticleId> ps = check_particle_list(L, 2, s, fn);
-  using command::Value;
-  return push_result(L, s, apply_command(L, s, "rigid",
-                                         {Value::of_number(check_number(L, 3, fn)), Value::of_ids({ps.begin(), ps.end()})},
-                                         fn));
-}
+int l_rigid(lua_State* L) { return particles_and_number(L, "rigid", 0, nullptr); }
 
 // m:bend({i, j, k, l}, D): a bending hinge on edge i-j between the
 // triangles (i, j, k) and (i, j, l), flat at rest.
 int l_bend(lua_State* L) {
-  const char* fn = "bend";
-  Scene& s = check_scene(L, fn);
-  const std::vector<ParticleId> ps = check_particle_list(L, 2, s, fn);
-  if (ps.size() != 4) arg_error(fn, 2, "expected the edge's two particles and the two opposite it, got " + std::to_string(ps.size()));
-  using command::Value;
-  return push_result(L, s, apply_command(L, s, "bend",
-                                         {Value::of_number(check_number(L, 3, fn)), Value::of_ids({ps.begin(), ps.end()})},
-                                         fn));
+  return particles_and_number(L, "bend", 4, "the edge's two particles and the two opposite it");
 }
 
 }  // namespace
