@@ -20,6 +20,25 @@ bool goal_on_line(const Args& a, std::size_t next) {
   return true;
 }
 
+// The goal added to the model, as a command's result.
+Result goal_result(Target& t, const Goal& g) {
+  Result r;
+  r.kind = Returns::Goal;
+  r.index = t.model.add_goal(g);
+  return r;
+}
+
+// A goal on four particles (planarity, bend): the weight a[0], the particles a[1].
+Goal four_particle_goal(Goal::Kind kind, const Args& a) {
+  const std::vector<std::uint32_t>& c = a[1].ids;
+  if (c.size() != 4) throw ArgumentError(1, "needs four particles, got " + std::to_string(c.size()));
+  Goal g;
+  g.kind = kind;
+  g.i = c[0], g.j = c[1], g.k = c[2], g.l = c[3];
+  g.weight = a[0].number;
+  return g;
+}
+
 Result add_goal(Target& t, Args& a) {
   Goal g;
   parse_goal_kind(a[kKind].word, g.kind);
@@ -38,9 +57,7 @@ Result add_goal(Target& t, Args& a) {
     }
   }
   g.weight = a[kWeight].number;
-  Result r;
-  r.kind = Returns::Goal;
-  r.index = t.model.add_goal(g);
+  Result r = goal_result(t, g);
   // The journal records what was given for this kind only.
   for (std::size_t k = kJ; k < kWeight; ++k) a[k].given = goal_on_line(a, k);
   return r;
@@ -63,18 +80,7 @@ void declare_goals(std::vector<Command>& out) {
                  Effect::Setting,
                  {{"weight", Type::Number, "the stiffness of the goal [N/m]", {0, kInf, true}},
                   {"corners", Type::Particles, "the quad's four corners in order round it"}},
-                 Returns::Goal, [](Target& t, Args& a) {
-                   const std::vector<std::uint32_t>& c = a[1].ids;
-                   if (c.size() != 4) throw ArgumentError(1, "needs four particles, got " + std::to_string(c.size()));
-                   Goal g;
-                   g.kind = Goal::Planar;
-                   g.i = c[0], g.j = c[1], g.k = c[2], g.l = c[3];
-                   g.weight = a[0].number;
-                   Result r;
-                   r.kind = Returns::Goal;
-                   r.index = t.model.add_goal(g);
-                   return r;
-                 }});
+                 Returns::Goal, [](Target& t, Args& a) { return goal_result(t, four_particle_goal(Goal::Planar, a)); }});
   out.push_back({"rigid", "a rigid-body goal: the particles move as one body, their shape now its rest shape (shape matching)",
                  Effect::Setting,
                  {{"weight", Type::Number, "the stiffness holding the shape [N/m]", {0, kInf, true}},
@@ -84,10 +90,7 @@ void declare_goals(std::vector<Command>& out) {
                    g.kind = Goal::Rigid;
                    g.members.assign(a[1].ids.begin(), a[1].ids.end());
                    g.weight = a[0].number;
-                   Result r;
-                   r.kind = Returns::Goal;
-                   r.index = t.model.add_goal(g);
-                   return r;
+                   return goal_result(t, g);
                  }});
   out.back().lua = "";  // m:rigid(particles, weight), m:goal{kind = "rigid", ...} (grammar/lua_goals.cpp)
   out.push_back({"bend", "a bending hinge of a triangulated surface flat at rest: edge i-j between triangles (i, j, k) and "
@@ -96,25 +99,18 @@ void declare_goals(std::vector<Command>& out) {
                  {{"D", Type::Number, "the plate's bending stiffness E t^3 / 12 (1 - nu^2) [N m]", {0, kInf, true}},
                   {"hinge", Type::Particles, "i and j (the edge), k and l (the corners opposite it)"}},
                  Returns::Goal, [](Target& t, Args& a) {
-                   const std::vector<std::uint32_t>& c = a[1].ids;
-                   if (c.size() != 4) throw ArgumentError(1, "needs four particles, got " + std::to_string(c.size()));
-                   for (std::uint32_t p : c) t.model.require_particle(p, "bend");
+                   Goal g = four_particle_goal(Goal::Bend, a);
+                   const ParticleId c[4] = {g.i, g.j, g.k, g.l};
+                   for (ParticleId p : c) t.model.require_particle(p, "bend");
                    const Vec3* x = t.model.particles.position.data();
                    BendHinge h;
                    if (!bend_hinge(x[c[0]], x[c[1]], x[c[2]], x[c[3]], h))
                      throw ModelError("bend: the triangles (" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " +
                                       std::to_string(c[2]) + ") and (" + std::to_string(c[0]) + ", " +
                                       std::to_string(c[1]) + ", " + std::to_string(c[3]) + ") must not be degenerate");
-                   Goal g;
-                   g.kind = Goal::Bend;
-                   g.i = c[0], g.j = c[1], g.k = c[2], g.l = c[3];
                    g.hinge = h.K;
                    g.hinge_area = h.area;
-                   g.weight = a[0].number;
-                   Result r;
-                   r.kind = Returns::Goal;
-                   r.index = t.model.add_goal(g);
-                   return r;
+                   return goal_result(t, g);
                  }});
   out.back().lua = "";  // m:bend(hinge, D) (grammar/lua_goals.cpp)
   out.push_back({"goal_weight", "sets a goal's weight", Effect::Setting,
