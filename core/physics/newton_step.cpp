@@ -59,11 +59,12 @@ Solver::NewtonWork Solver::newton_work() const {
 
 void Solver::integrate_newton() {
   Particles& P = model_.particles;
-  if (const char* kind = NewtonSystem::unsupported(model_))
+  const char* kind = NewtonSystem::unsupported(model_);
+  if (!kind && pressure_acts()) kind = "pressure or area loads";
+  if (!kind && !couples().empty()) kind = "moments on 3-DOF beams";
+  if (kind)
     throw ModelError(std::string("solver: integrator \"newton\" has no tangent stiffness for ") + kind +
                      " yet (bars, cables and anchor, plane, line and length goals only); use another integrator for this model");
-  if (pressure_acts()) throw ModelError("solver: integrator \"newton\" has no tangent stiffness for pressure or area loads yet (bars, cables and anchor, plane, line and length goals only); use another integrator for this model");
-  if (!couples().empty()) throw ModelError("solver: integrator \"newton\" has no tangent stiffness for moments on 3-DOF beams yet (bars, cables and anchor, plane, line and length goals only); use another integrator for this model");
   if (!newton_) newton_ = std::make_shared<NewtonSystem>();
   compute_forces();
   double r2 = 0, largest = 0;
