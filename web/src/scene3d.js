@@ -5,6 +5,11 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { EDGE_BEAM, EDGE_CABLE, EDGE_PATCH, STATE_COLOURS } from './protocol.js';
 
+// Colours pass through as written, sRGB in and out: no conversion per
+// pixel, which a software rasteriser pays for in every fragment, and the
+// colour maps' edges show the same colours as the legend's CSS gradient.
+THREE.ColorManagement.enabled = false;
+
 const BEAM = new THREE.Color(0x1f3a93), CABLE = new THREE.Color(0x555555), PATCH = new THREE.Color(0x8a8a8a);
 
 // Diverging: blue (compression, negative) - light grey - red (tension).
@@ -35,12 +40,35 @@ function softwareGL() {
 // dense net is a carpet of dots either way; fewer pixels draw faster).
 function autoPointSize(n) { return Math.max(2, Math.min(6, Math.round(6 * Math.sqrt(2000 / Math.max(n, 1))))); }
 
+// Patches: translucent, flat shaded by the triangle's normal taken in the
+// fragment shader from the derivatives of the position (no vertex normals to
+// recompute and upload every frame), lit from the viewer's side, both faces
+// alike. Costs SwiftShader about half of three.js's Lambert material, which
+// lights every pixel with the scene's lights.
+function surfaceMaterial(colour, opacity) {
+  return new THREE.ShaderMaterial({
+    uniforms: { colour: { value: colour }, opacity: { value: opacity } },
+    vertexShader: `varying vec3 at;
+      void main() { vec4 p = modelViewMatrix * vec4(position, 1.0); at = p.xyz; gl_Position = projectionMatrix * p; }`,
+    fragmentShader: `uniform vec3 colour; uniform float opacity; varying vec3 at;
+      void main() {
+        vec3 n = normalize(cross(dFdx(at), dFdy(at)));
+        gl_FragColor = vec4(colour * (0.6 + 0.45 * abs(dot(n, vec3(0.36, 0.48, 0.8)))), opacity);
+      }`,
+    side: THREE.DoubleSide, transparent: true, depthWrite: false,
+  });
+}
+
+// Patch bars closer than this on screen are not drawn over their surface.
+const BAR_PIXELS = 6;
+
 export class View3D {
   constructor(container) {
     this.container = container;
     this.software = softwareGL();
     this.renderer = new THREE.WebGLRenderer({ antialias: !this.software, preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(1);
+    this.renderer.outputColorSpace = THREE.LinearSRGBColorSpace;  // no conversion: see ColorManagement above
     this.renderer.setClearColor(0xffffff);
     container.appendChild(this.renderer.domElement);
     this.scene = new THREE.Scene();
@@ -48,10 +76,6 @@ export class View3D {
     this.camera.up.set(0, 0, 1);
     this.camera.position.set(8, -10, 6);
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
-    this.scene.add(new THREE.AmbientLight(0xffffff, 0.7));
-    const sun = new THREE.DirectionalLight(0xffffff, 0.8);
-    sun.position.set(3, -5, 10);
-    this.scene.add(sun);
     this.pointSize = null;  // null: autoPointSize of the particle count
     this.topology = null;
     this.frame = null;
@@ -80,7 +104,7 @@ export class View3D {
       o.material.dispose();
     }
     this.objects = [];
-    this.points = this.mesh = this.fieldLines = this.cableLines = this.slackLines = null;
+    this.points = this.mesh = this.fieldLines = this.cableLines = this.slackLines = this.patchBars = null;
   }
 
   add(object, order = 0) {
@@ -99,6 +123,7 @@ export class View3D {
     this.clear();
     this.topology = t;
     this.frame = null;
+    this.edgesShown = true;
     const n = t.count, ne = t.edgeKind.length;
     this.positions = new Float32Array(3 * n);
     this.position = new THREE.BufferAttribute(this.positions, 3).setUsage(THREE.DynamicDrawUsage);
@@ -106,9 +131,10 @@ export class View3D {
     pg.setAttribute('position', this.position);
     this.pointColours = new Float32Array(3 * n);
     pg.setAttribute('color', new THREE.BufferAttribute(this.pointColours, 3));
-    // On top of everything: transparent, so drawn after the patches.
+    // On top of everything: among the transparent objects, so drawn after
+    // the patches, but written without blending (they are opaque).
     const size = this.pointSize ?? autoPointSize(n);
-    this.points = this.add(new THREE.Points(pg, new THREE.PointsMaterial({ size, sizeAttenuation: false, vertexColors: true, depthTest: false, transparent: true })), 2);
+    this.points = this.add(new THREE.Points(pg, new THREE.PointsMaterial({ size, sizeAttenuation: false, vertexColors: true, depthTest: false, transparent: true, blending: THREE.NoBlending })), 2);
     this.paintStates();
     const byKind = [[], [], []], cables = [];
     for (let e = 0; e < ne; ++e) {
@@ -121,8 +147,17 @@ export class View3D {
       const g = new THREE.BufferGeometry();
       g.setAttribute('position', this.position);
       g.setIndex(new THREE.BufferAttribute(new Uint32Array(byKind[kind]), 1));
-      this.kindLines.push(this.add(new THREE.LineSegments(g, new THREE.LineBasicMaterial({ color: colour }))));
+      const lines = this.add(new THREE.LineSegments(g, new THREE.LineBasicMaterial({ color: colour })));
+      this.kindLines.push(lines);
+      if (kind === EDGE_PATCH) this.patchBars = lines;
     }
+    // Patch bars drawn over their patch's surface are left out while they
+    // lie closer on screen than BAR_PIXELS (median of up to 255 of them,
+    // evenly spread): there they only darken the surface, and each is a
+    // primitive the software rasteriser pays for.
+    const pb = byKind[EDGE_PATCH], every = Math.max(1, Math.floor(pb.length / 2 / 255));
+    this.barSample = [];
+    if (t.triangles.length) for (let e = 0; 2 * e < pb.length; e += every) this.barSample.push(pb[2 * e], pb[2 * e + 1]);
     this.cables = Uint32Array.from(cables);
     if (cables.length) {
       this.cableLines = this.add(this.edgeLines(cables.length, false, new THREE.LineBasicMaterial({ color: CABLE })));
@@ -132,9 +167,7 @@ export class View3D {
       const mg = new THREE.BufferGeometry();
       mg.setAttribute('position', this.position);
       mg.setIndex(new THREE.BufferAttribute(t.triangles, 1));
-      // Flat shading takes the normal from the triangle in the shader: no
-      // vertex normals to recompute and upload every frame.
-      this.mesh = this.add(new THREE.Mesh(mg, new THREE.MeshLambertMaterial({ color: PATCH, side: THREE.DoubleSide, transparent: true, opacity: 0.55, depthWrite: false, flatShading: true })), 1);
+      this.mesh = this.add(new THREE.Mesh(mg, surfaceMaterial(PATCH, 0.55)), 1);
     }
     this.changed = true;
   }
@@ -183,6 +216,7 @@ export class View3D {
       range = Math.max(Math.abs(lo), Math.abs(hi)) || 1;
     }
     const diverging = values && lo < 0 && hi > 0;
+    this.edgesShown = !values;
     for (const o of this.kindLines) o.visible = !values;
     if (this.cableLines) { this.cableLines.visible = !values; this.slackLines.visible = !values; }
     if (values) this.paintField(values, diverging, lo, hi, range);
@@ -245,7 +279,27 @@ export class View3D {
     this.fitted = true;
   }
 
-  render() { this.renderer.render(this.scene, this.camera); }
+  render() {
+    if (this.patchBars) this.patchBars.visible = this.edgesShown && !this.barsClose();
+    this.renderer.render(this.scene, this.camera);
+  }
+
+  // The median length on screen, in pixels, of the sampled patch bars is
+  // below BAR_PIXELS (none sampled: patches without a surface, never).
+  barsClose() {
+    const s = this.barSample, p = this.positions, n = s.length / 2;
+    if (!n) return false;
+    const h = this.renderer.domElement.clientHeight / 2, w = this.renderer.domElement.clientWidth / 2;
+    const a = new THREE.Vector3(), b = new THREE.Vector3(), lengths = new Float32Array(n);
+    for (let k = 0; k < n; ++k) {
+      a.fromArray(p, 3 * s[2 * k]).project(this.camera);
+      b.fromArray(p, 3 * s[2 * k + 1]).project(this.camera);
+      lengths[k] = Math.hypot((a.x - b.x) * w, (a.y - b.y) * h);
+    }
+    lengths.sort();
+    this.barPixels = lengths[n >> 1];
+    return this.barPixels < BAR_PIXELS;
+  }
   get changed() { return this._changed; }
   set changed(v) { this._changed = v; }
 
