@@ -27,9 +27,15 @@
 // when it took many, the shift changed or the pattern did: refactoring
 // after 8 iterations instead of 20 took as long on the 800 x 800 and
 // 1000 x 1000 nets (fewer iterations, one more factorisation).
+// Large blocks (multigrid_rows) get a smoothed-aggregation multigrid
+// cycle instead of their factors: a 2-D net's factors cost n^1.5 to
+// compute and n log n to apply, the cycle n (on the 1000 x 1000 net the
+// solve went from 60 s to 16 s); its hierarchy is built again when a solve
+// took more than 8 iterations.
 // Rows are ordered axis by axis (every free x, then y, then z), each in
 // the fill-reducing order (AMD) of its block, so an axis block is a
-// diagonal block of K and its factor needs no permutation. The pattern
+// diagonal block of K and its factor needs no permutation (a multigrid
+// block keeps the particles' order, which keeps neighbours near). The pattern
 // depends on the awake bars and the free coordinates only, so the symbolic
 // analysis (ordering, elimination tree) is kept: when the model's revision
 // moves the pattern is built again and compared, and a new analysis comes
@@ -42,11 +48,18 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "physics/aggregation_multigrid.hpp"
 
 namespace tendril {
 
 class NewtonSystem {
  public:
+  // An axis block with at least this many rows is preconditioned by a
+  // multigrid cycle instead of its factors (aggregation_multigrid.hpp).
+  // Measured on the prestressed net: at 10K particles the factors took
+  // 0.048 s and the cycle 0.065 s; at 40K 0.31 s and 0.27 s; at 160K
+  // 3.2 s and 1.5 s. Tests and benchmarks may change it.
+  static inline int multigrid_rows = 25'000;
   // The first element kind of the model the tangent does not cover
   // ("hinges (3-DOF spline beams)", "goals", ...), or nullptr.
   static const char* unsupported(const Model& m);
@@ -78,13 +91,17 @@ class NewtonSystem {
   Sparse K_;                       // lower triangle
   std::vector<int> own_slot_;      // per particle: its block's 6 entries in K_'s values, or -1
   std::vector<int> bar_slot_;      // per awake bar: the 9 entries of its (i, j) block, or -1
+  std::vector<int> axis_slot_;     // per awake bar and axis: its ii, jj and ij entries in that axis block, or -1
   struct Axis {
     Sparse A;                      // K_'s diagonal block, lower triangle
     Eigen::SimplicialLDLT<Sparse, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt;  // rows already in AMD order
+    bool multigrid = false;        // a large block: a multigrid cycle instead of the factors
+    AggregationMultigrid cycle;
   };
   std::array<Axis, 3> axis_;
   std::vector<ParticleId> framed_;  // particles with a frame of their own
   std::vector<Mat3> frames_;        // their frames (columns: the local axes)
+  std::vector<Mat3> own_;           // each particle's own block of K, for its frame
   bool analysed_ = false, factored_ = false, factor_ok_ = false;
   double factored_shift_ = -1;
   int last_iterations_ = 0;
