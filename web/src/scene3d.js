@@ -55,7 +55,9 @@ function surfaceMaterial(colour, opacity) {
         vec3 n = normalize(cross(dFdx(at), dFdy(at)));
         gl_FragColor = vec4(colour * (0.6 + 0.45 * abs(dot(n, vec3(0.36, 0.48, 0.8)))), opacity);
       }`,
-    side: THREE.DoubleSide, transparent: true, depthWrite: false,
+    // One pass for both faces (three.js draws a translucent two-sided
+    // material twice, back faces then front ones, to order their blending).
+    side: THREE.DoubleSide, transparent: true, depthWrite: false, forceSinglePass: true,
   });
 }
 
@@ -67,7 +69,8 @@ export class View3D {
     this.container = container;
     this.software = softwareGL();
     this.renderer = new THREE.WebGLRenderer({ antialias: !this.software, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(1);
+    this.scale = 1;  // canvas pixels per CSS pixel: setScale
+    this.renderer.setPixelRatio(this.scale);
     this.renderer.outputColorSpace = THREE.LinearSRGBColorSpace;  // no conversion: see ColorManagement above
     this.renderer.setClearColor(0xffffff);
     container.appendChild(this.renderer.domElement);
@@ -93,6 +96,16 @@ export class View3D {
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
     this.changed = true;
+  }
+
+  // Draws at `scale` canvas pixels per CSS pixel (the page lowers it while
+  // a moving model draws slowly: studio.js). Particles and lines keep their
+  // size on screen (three.js scales them by the ratio).
+  setScale(scale) {
+    if (scale === this.scale) return;
+    this.scale = scale;
+    this.renderer.setPixelRatio(scale);
+    this.resize();
   }
 
   setBackground(dark) { this.renderer.setClearColor(dark ? 0x000000 : 0xffffff); this.changed = true; }

@@ -28,12 +28,12 @@ const studio = window.studio = {
     return [f.positions[3 * k], f.positions[3 * k + 1], f.positions[3 * k + 2]];
   },
   dragLatency: [], drawLatency: [],  // ms from a drag to the first frame showing it: received, drawn
-  // The drawn colour at canvas pixel (x, y), as [r, g, b] 0-255.
+  // The drawn colour at CSS pixel (x, y) of the canvas, as [r, g, b] 0-255.
   pixel: (x, y) => {
     const c = document.createElement('canvas');
     c.width = 1; c.height = 1;
-    const g = c.getContext('2d');
-    g.drawImage(view.renderer.domElement, Math.round(x), Math.round(y), 1, 1, 0, 0, 1, 1);
+    const g = c.getContext('2d'), s = view.scale;
+    g.drawImage(view.renderer.domElement, Math.floor(x * s), Math.floor(y * s), 1, 1, 0, 0, 1, 1);
     return Array.from(g.getImageData(0, 0, 1, 1).data.slice(0, 3));
   },
 };
@@ -404,10 +404,24 @@ $('branch').onclick = async () => { await request({ cmd: 'branch', index: Number
 
 // Draws only when something changed (a frame, the camera, a colour), so an
 // idle page costs the machine, and the solver beside it, nothing.
-let dirty = true;
+//
+// Without a GPU the browser draws on the CPU (SwiftShader), and a large
+// model costs it more per frame than a live picture allows; part of that is
+// per pixel. So while the picture moves and a draw holds back the next
+// animation frame by more than SLOW_DRAW_MS (a running mean), the page draws
+// at half resolution (a quarter of the pixels); once nothing has changed
+// for REST_MS it draws again at full resolution. studio.drawGap is that mean.
+const SLOW_DRAW_MS = 40, REST_MS = 300;
+let dirty = true, drewAt = null, lastDraw = 0;
 view.controls.addEventListener('change', () => { dirty = true; });
 studio.renderMs = 0;
-function loop() {
+studio.drawGap = 0;
+function loop(now) {
+  if (drewAt !== null) {  // the first animation frame after a draw: how long the draw held it back
+    studio.drawGap = 0.8 * studio.drawGap + 0.2 * (now - drewAt);
+    drewAt = null;
+    if (studio.drawGap > SLOW_DRAW_MS) view.setScale(0.5);
+  }
   if (dragTarget && press && press.hit) {
     send({ cmd: 'drag', particle: press.hit.id, to: dragTarget });
     if (!dragSent) dragSent = { at: performance.now(), step: null };
@@ -420,15 +434,21 @@ function loop() {
     dragAt = undrawn.dragAt ?? null;
     undrawn = null;
   }
+  if (drawing && view.scale < 1 && now - lastDraw > REST_MS && !dirty && !view.changed) {
+    view.setScale(1);  // at rest: the full picture once
+    studio.drawGap = 0;
+  }
   if (drawing && (dirty || view.changed)) {
     const t0 = performance.now();
     view.render();
     if (dragAt !== null) studio.drawLatency.push(performance.now() - dragAt);
     studio.renderMs = 0.9 * studio.renderMs + 0.1 * (performance.now() - t0);
     dirty = view.changed = false;
+    drewAt = now;
+    lastDraw = now;
   }
   updateStats();
   requestAnimationFrame(loop);
 }
 connect();
-loop();
+requestAnimationFrame(loop);
