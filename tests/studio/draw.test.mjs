@@ -78,3 +78,40 @@ await run('draw: every state', scene('tests/studio/states.lua'), ['--speed', '0'
   const hasSurface = await page.evaluate(() => studio.topology.triangles.length / 3);
   check(hasSurface === 18, `the 3 x 3 patch is drawn as 18 triangles (${hasSurface})`);
 });
+
+// A net dense on screen (its edges a few pixels long): the patch bars are
+// left out, the simple particles are shown by the surface's colour, and the
+// others (the locked corners) still as dots in their state's colour; close
+// up again, every particle is a dot.
+await run('draw: a dense net', scene('bench/studio_net.lua'), ['--param', 'particles=5000', '--speed', '0'], async ({ studio, browser }) => {
+  const page = await openPage(browser, studio.url);
+  await page.evaluate(() => studio.request({ cmd: 'pause' }));
+  const away = (factor) => page.evaluate((f) => {
+    const v = studio.view, c = v.controls;
+    v.camera.position.sub(c.target).multiplyScalar(f).add(c.target);
+    c.update();
+  }, factor);
+  await away(3);
+  const dense = await until(page, () => studio.view.dots.visible && studio.view.scale === 1 &&
+                                      { edge: studio.view.edgePixels, dots: studio.view.dots.geometry.drawRange.count, bars: studio.view.patchBars.visible });
+  check(dense.edge < 6 && !dense.bars, `far away the net's edges are ${dense.edge.toFixed(1)} px on screen and its bars are left out`);
+  const shown = await page.evaluate(() => {
+    const t = studio.topology, out = [];
+    let simple = -1;
+    for (let k = 0; k < t.count; ++k) {
+      if (t.states[k] !== 4) { const [x, y] = studio.project(t.ids[k]); out.push({ id: t.ids[k], state: t.states[k], xy: [x, y], rgb: studio.pixel(x, y) }); }
+      else if (simple < 0 && k > t.count / 2) simple = k;
+    }
+    const [x, y] = studio.project(t.ids[simple]);
+    return { others: out, simple: studio.pixel(x, y), count: t.count };
+  });
+  check(dense.dots === shown.others.length && dense.dots < shown.count / 10, `${dense.dots} dots drawn, the particles that are not simple (of ${shown.count})`);
+  const r = checkColours(shown.others, 'dense');
+  check(r.matched >= 4, `those ${r.matched} are drawn in their state's colour (${r.seen.join(', ')})`);
+  const [red, green, blue] = shown.simple;
+  check(green > red + 40 && blue > red + 40 && Math.abs(green - blue) < 24, `a simple particle in the middle shows the surface tinted with the simple state's cyan (${shown.simple})`);
+  await away(1 / 3);
+  const close = await until(page, () => studio.view.points.visible && !studio.view.dots.visible && { edge: studio.view.edgePixels, bars: studio.view.patchBars.visible });
+  check(close.edge >= 6 && close.bars, `close up (edges ${close.edge.toFixed(1)} px) every particle is a dot again and the bars are drawn`);
+  check(page.problems.length === 0, 'no error on the page: ' + page.problems.join('; '));
+});

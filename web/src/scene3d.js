@@ -3,13 +3,14 @@
 // surfaces, edges coloured by a result field with a legend; an orbit camera.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
-import { EDGE_BEAM, EDGE_CABLE, EDGE_PATCH, STATE_COLOURS } from './protocol.js';
+import { EDGE_BEAM, EDGE_CABLE, EDGE_PATCH, STATES, STATE_COLOURS } from './protocol.js';
 
 // Colours pass through as written, sRGB in and out: no conversion per
 // pixel, which a software rasteriser pays for in every fragment, and the
 // colour maps' edges show the same colours as the legend's CSS gradient.
 THREE.ColorManagement.enabled = false;
 
+const SIMPLE = STATES.indexOf('simple');
 const BEAM = new THREE.Color(0x1f3a93), CABLE = new THREE.Color(0x555555), PATCH = new THREE.Color(0x8a8a8a);
 
 // Diverging: blue (compression, negative) - light grey - red (tension).
@@ -45,15 +46,18 @@ function autoPointSize(n) { return Math.max(2, Math.min(6, Math.round(6 * Math.s
 // recompute and upload every frame), lit from the viewer's side, both faces
 // alike. Costs SwiftShader about half of three.js's Lambert material, which
 // lights every pixel with the scene's lights.
+// While the surface is dense on screen (`tinted` 1) it takes the colour of
+// the simple state at the particles that have it (`tint` 1), which are then
+// not drawn as dots (View3D.paintStates).
 function surfaceMaterial(colour, opacity) {
   return new THREE.ShaderMaterial({
-    uniforms: { colour: { value: colour }, opacity: { value: opacity } },
-    vertexShader: `varying vec3 at;
-      void main() { vec4 p = modelViewMatrix * vec4(position, 1.0); at = p.xyz; gl_Position = projectionMatrix * p; }`,
-    fragmentShader: `uniform vec3 colour; uniform float opacity; varying vec3 at;
+    uniforms: { colour: { value: colour }, opacity: { value: opacity }, tinted: { value: 0 }, tintColour: { value: new THREE.Color(STATE_COLOURS[SIMPLE]) } },
+    vertexShader: `attribute float tint; uniform float tinted; varying vec3 at; varying float mixed;
+      void main() { vec4 p = modelViewMatrix * vec4(position, 1.0); at = p.xyz; mixed = tinted * tint; gl_Position = projectionMatrix * p; }`,
+    fragmentShader: `uniform vec3 colour, tintColour; uniform float opacity; varying vec3 at; varying float mixed;
       void main() {
         vec3 n = normalize(cross(dFdx(at), dFdy(at)));
-        gl_FragColor = vec4(colour * (0.6 + 0.45 * abs(dot(n, vec3(0.36, 0.48, 0.8)))), opacity);
+        gl_FragColor = vec4(mix(colour, tintColour, mixed) * (0.35 + 0.65 * abs(dot(n, vec3(0.5, 0.6, 0.62)))), opacity);
       }`,
     // One pass for both faces (three.js draws a translucent two-sided
     // material twice, back faces then front ones, to order their blending).
@@ -61,8 +65,9 @@ function surfaceMaterial(colour, opacity) {
   });
 }
 
-// Patch bars closer than this on screen are not drawn over their surface.
-const BAR_PIXELS = 6;
+// A surface is dense on screen when the median length of its edges there
+// (up to 255 of them, evenly spread) is below this: View3D.render.
+const DENSE_PIXELS = 6;
 
 export class View3D {
   constructor(container) {
@@ -117,7 +122,7 @@ export class View3D {
       o.material.dispose();
     }
     this.objects = [];
-    this.points = this.mesh = this.fieldLines = this.cableLines = this.slackLines = this.patchBars = null;
+    this.points = this.dots = this.mesh = this.fieldLines = this.cableLines = this.slackLines = this.patchBars = null;
   }
 
   add(object, order = 0) {
@@ -138,17 +143,29 @@ export class View3D {
     this.frame = null;
     this.edgesShown = true;
     const n = t.count, ne = t.edgeKind.length;
+    // Enough primitives that a software rasteriser's frame can be slow:
+    // below, a slow frame is the machine's load, not the drawing's (studio.js).
+    this.large = n + ne + t.triangles.length / 3 >= 10000;
     this.positions = new Float32Array(3 * n);
     this.position = new THREE.BufferAttribute(this.positions, 3).setUsage(THREE.DynamicDrawUsage);
     const pg = new THREE.BufferGeometry();
     pg.setAttribute('position', this.position);
     this.pointColours = new Float32Array(3 * n);
-    pg.setAttribute('color', new THREE.BufferAttribute(this.pointColours, 3));
+    const colours = new THREE.BufferAttribute(this.pointColours, 3);
+    pg.setAttribute('color', colours);
     // On top of everything: among the transparent objects, so drawn after
     // the patches, but written without blending (they are opaque).
     const size = this.pointSize ?? autoPointSize(n);
-    this.points = this.add(new THREE.Points(pg, new THREE.PointsMaterial({ size, sizeAttenuation: false, vertexColors: true, depthTest: false, transparent: true, blending: THREE.NoBlending })), 2);
-    this.paintStates();
+    const dotMaterial = new THREE.PointsMaterial({ size, sizeAttenuation: false, vertexColors: true, depthTest: false, transparent: true, blending: THREE.NoBlending });
+    this.points = this.add(new THREE.Points(pg, dotMaterial), 2);
+    // The same, only the particles a dense surface does not show by its
+    // colour (an index list: paintStates).
+    const dg = new THREE.BufferGeometry();
+    dg.setAttribute('position', this.position);
+    dg.setAttribute('color', colours);
+    dg.setIndex(new THREE.BufferAttribute(new Uint32Array(n), 1));
+    this.dots = this.add(new THREE.Points(dg, dotMaterial.clone()), 2);
+    this.dots.visible = false;
     const byKind = [[], [], []], cables = [];
     for (let e = 0; e < ne; ++e) {
       byKind[t.edgeKind[e]].push(t.edges[2 * e], t.edges[2 * e + 1]);
@@ -164,13 +181,10 @@ export class View3D {
       this.kindLines.push(lines);
       if (kind === EDGE_PATCH) this.patchBars = lines;
     }
-    // Patch bars drawn over their patch's surface are left out while they
-    // lie closer on screen than BAR_PIXELS (median of up to 255 of them,
-    // evenly spread): there they only darken the surface, and each is a
-    // primitive the software rasteriser pays for.
-    const pb = byKind[EDGE_PATCH], every = Math.max(1, Math.floor(pb.length / 2 / 255));
-    this.barSample = [];
-    if (t.triangles.length) for (let e = 0; 2 * e < pb.length; e += every) this.barSample.push(pb[2 * e], pb[2 * e + 1]);
+    // Edges of the surface whose length on screen tells when it is dense.
+    const nt = t.triangles.length / 3, every = Math.max(1, Math.floor(nt / 255));
+    this.edgeSample = [];
+    for (let k = 0; k < nt; k += every) this.edgeSample.push(t.triangles[3 * k], t.triangles[3 * k + 1]);
     this.cables = Uint32Array.from(cables);
     if (cables.length) {
       this.cableLines = this.add(this.edgeLines(cables.length, false, new THREE.LineBasicMaterial({ color: CABLE })));
@@ -180,8 +194,13 @@ export class View3D {
       const mg = new THREE.BufferGeometry();
       mg.setAttribute('position', this.position);
       mg.setIndex(new THREE.BufferAttribute(t.triangles, 1));
+      this.tint = new Float32Array(n);
+      mg.setAttribute('tint', new THREE.BufferAttribute(this.tint, 1));
       this.mesh = this.add(new THREE.Mesh(mg, surfaceMaterial(PATCH, 0.55)), 1);
+      this.onSurface = new Uint8Array(n);
+      for (const k of t.triangles) this.onSurface[k] = 1;
     }
+    this.paintStates();
     this.changed = true;
   }
 
@@ -196,19 +215,35 @@ export class View3D {
     return new THREE.LineSegments(g, material);
   }
 
+  // Each particle in its state's colour (magenta when selected). A dense
+  // surface is tinted with the simple state's colour at its simple
+  // particles (not selected), and the dots drawn over it are the others.
   paintStates() {
     const t = this.topology, c = new THREE.Color(), out = this.pointColours;
+    const dots = this.dots.geometry.index.array;
+    let m = 0;
     for (let k = 0; k < t.count; ++k) {
-      c.setHex(this.selected.has(t.ids[k]) ? 0xff00ff : STATE_COLOURS[t.states[k]] ?? 0);
+      const selected = this.selected.has(t.ids[k]);
+      c.setHex(selected ? 0xff00ff : STATE_COLOURS[t.states[k]] ?? 0);
       out[3 * k] = c.r; out[3 * k + 1] = c.g; out[3 * k + 2] = c.b;
+      const shown = this.mesh && this.onSurface[k] && t.states[k] === SIMPLE && !selected;
+      if (this.mesh) this.tint[k] = shown ? 1 : 0;
+      if (!shown) dots[m++] = k;
     }
-    if (this.points) this.points.geometry.attributes.color.needsUpdate = true;
+    this.points.geometry.attributes.color.needsUpdate = true;
+    this.dots.geometry.index.needsUpdate = true;
+    this.dots.geometry.setDrawRange(0, m);
+    this.dots.material.size = this.pointSize ?? autoPointSize(m);  // few: as large as on a small model
+    if (this.mesh) this.mesh.geometry.attributes.tint.needsUpdate = true;
     this.changed = true;
   }
 
   setPointSize(size) {
     this.pointSize = size;
-    if (this.points) this.points.material.size = size ?? autoPointSize(this.topology.count);
+    if (this.points) {
+      this.points.material.size = size ?? autoPointSize(this.topology.count);
+      this.dots.material.size = size ?? autoPointSize(this.dots.geometry.drawRange.count);
+    }
     this.changed = true;
   }
 
@@ -292,15 +327,25 @@ export class View3D {
     this.fitted = true;
   }
 
+  // Where the surface is dense on screen a software rasteriser would spend
+  // most of a frame on primitives that show nothing more: patch bars that
+  // only darken their surface, and a dot at every particle. There the
+  // patch bars are left out, and the simple particles on the surface are
+  // shown by its colour (paintStates) rather than a dot each.
   render() {
-    if (this.patchBars) this.patchBars.visible = this.edgesShown && !this.barsClose();
+    if (!this.topology) return this.renderer.render(this.scene, this.camera);
+    const dense = this.surfaceDense();
+    if (this.patchBars) this.patchBars.visible = this.edgesShown && !dense;
+    this.points.visible = !dense;
+    this.dots.visible = dense;
+    if (this.mesh) this.mesh.material.uniforms.tinted.value = dense ? 1 : 0;
     this.renderer.render(this.scene, this.camera);
   }
 
-  // The median length on screen, in pixels, of the sampled patch bars is
-  // below BAR_PIXELS (none sampled: patches without a surface, never).
-  barsClose() {
-    const s = this.barSample, p = this.positions, n = s.length / 2;
+  // The median length on screen, in CSS pixels, of the sampled surface
+  // edges is below DENSE_PIXELS (no surface: never).
+  surfaceDense() {
+    const s = this.edgeSample, p = this.positions, n = s.length / 2;
     if (!n) return false;
     const h = this.renderer.domElement.clientHeight / 2, w = this.renderer.domElement.clientWidth / 2;
     const a = new THREE.Vector3(), b = new THREE.Vector3(), lengths = new Float32Array(n);
@@ -310,8 +355,8 @@ export class View3D {
       lengths[k] = Math.hypot((a.x - b.x) * w, (a.y - b.y) * h);
     }
     lengths.sort();
-    this.barPixels = lengths[n >> 1];
-    return this.barPixels < BAR_PIXELS;
+    this.edgePixels = lengths[n >> 1];
+    return this.edgePixels < DENSE_PIXELS;
   }
   get changed() { return this._changed; }
   set changed(v) { this._changed = v; }

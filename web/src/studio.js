@@ -411,6 +411,8 @@ $('branch').onclick = async () => { await request({ cmd: 'branch', index: Number
 // animation frame by more than SLOW_DRAW_MS (a running mean), the page draws
 // at half resolution (a quarter of the pixels); once nothing has changed
 // for REST_MS it draws again at full resolution. studio.drawGap is that mean.
+// Only for a large model (view.large): a small one draws fast, and a slow
+// frame there is the machine's load, which a smaller canvas would not help.
 const SLOW_DRAW_MS = 40, REST_MS = 300;
 let dirty = true, drewAt = null, lastDraw = 0;
 view.controls.addEventListener('change', () => { dirty = true; });
@@ -420,7 +422,7 @@ function loop(now) {
   if (drewAt !== null) {  // the first animation frame after a draw: how long the draw held it back
     studio.drawGap = 0.8 * studio.drawGap + 0.2 * (now - drewAt);
     drewAt = null;
-    if (studio.drawGap > SLOW_DRAW_MS) view.setScale(0.5);
+    if (studio.drawGap > SLOW_DRAW_MS && view.large) view.setScale(0.5);
   }
   if (dragTarget && press && press.hit) {
     send({ cmd: 'drag', particle: press.hit.id, to: dragTarget });
