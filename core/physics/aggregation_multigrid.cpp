@@ -17,11 +17,11 @@ constexpr double kStrength = 0.08;  // 0.25 took 177 conjugate-gradient iteratio
 constexpr int kCoarsestRows = 400;     // factored below this
 constexpr double kStalled = 0.85;      // a level that keeps more rows than this stops coarsening
 
-using Rows = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+using RowsD = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;  // the setup's matrices (the cycle's: float)
 
 // Aggregate of every row (-1: none, a row without strong connections, left
 // to the smoother); returns the number of aggregates.
-int aggregate(const Rows& A, const Eigen::VectorXd& diagonal, std::vector<int>& agg,
+int aggregate(const RowsD& A, const Eigen::VectorXd& diagonal, std::vector<int>& agg,
               std::vector<std::uint8_t>& strong) {
   const int n = int(A.rows());
   const int* outer = A.outerIndexPtr();
@@ -82,7 +82,7 @@ int aggregate(const Rows& A, const Eigen::VectorXd& diagonal, std::vector<int>& 
 // A with its weak connections added to the diagonal (the rows' sums stay,
 // so constants stay near its null space), omega = 4/3 over a bound of the
 // spectral radius of D_F^-1 A_F (Gershgorin's).
-Rows smoothed_prolongator(const Rows& A, const Eigen::VectorXd& diagonal, const std::vector<int>& agg,
+RowsD smoothed_prolongator(const RowsD& A, const Eigen::VectorXd& diagonal, const std::vector<int>& agg,
                           const std::vector<std::uint8_t>& strong, int coarse) {
   const int n = int(A.rows());
   const int* outer = A.outerIndexPtr();
@@ -115,19 +115,19 @@ Rows smoothed_prolongator(const Rows& A, const Eigen::VectorXd& diagonal, const 
     }
     for (const auto& [c, v] : row) t.emplace_back(i, c, v);  // duplicates are summed
   }
-  Rows P(n, coarse);
+  RowsD P(n, coarse);
   P.setFromTriplets(t.begin(), t.end());
   return P;
 }
 
-void gauss_seidel(const Rows& A, const Eigen::VectorXd& inverse_diagonal, const Eigen::VectorXd& b,
-                  Eigen::VectorXd& x, bool forward) {
+template <class Matrix, class Vector>
+void gauss_seidel(const Matrix& A, const Vector& inverse_diagonal, const Vector& b, Vector& x, bool forward) {
   const int n = int(A.rows());
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
-  const double* value = A.valuePtr();
+  const auto* value = A.valuePtr();
   auto relax = [&](int i) {
-    double s = b[i];
+    auto s = b[i];
     for (int k = outer[i]; k < outer[i + 1]; ++k)
       if (inner[k] != i) s -= value[k] * x[inner[k]];
     x[i] = s * inverse_diagonal[i];
@@ -141,7 +141,7 @@ void gauss_seidel(const Rows& A, const Eigen::VectorXd& inverse_diagonal, const 
 // The whole symmetric matrix, by rows, from its lower triangle by columns:
 // row i is row i of the lower triangle (columns j < i, found in column j)
 // followed by column i (rows >= i).
-Rows whole(const Eigen::SparseMatrix<double>& lower) {
+RowsD whole(const Eigen::SparseMatrix<double>& lower) {
   const int n = int(lower.rows());
   const int* lo = lower.outerIndexPtr();
   const int* li = lower.innerIndexPtr();
@@ -150,7 +150,7 @@ Rows whole(const Eigen::SparseMatrix<double>& lower) {
   for (int j = 0; j < n; ++j)
     for (int k = lo[j]; k < lo[j + 1]; ++k)
       if (li[k] > j) ++left[li[k]];
-  Rows A(n, n);
+  RowsD A(n, n);
   int* outer = A.outerIndexPtr();
   outer[0] = 0;
   for (int i = 0; i < n; ++i) outer[i + 1] = outer[i] + left[i] + (lo[i + 1] - lo[i]);
@@ -172,37 +172,38 @@ Rows whole(const Eigen::SparseMatrix<double>& lower) {
 
 bool AggregationMultigrid::setup(const Lower& lower) {
   levels_.clear();
-  Rows A = whole(lower);
+  RowsD A = whole(lower);
   std::vector<int> agg;
   std::vector<std::uint8_t> strong;
   for (;;) {
-    Level L;
-    L.A = std::move(A);
-    const Eigen::VectorXd diagonal = L.A.diagonal();
+    const Eigen::VectorXd diagonal = A.diagonal();
     if (!(diagonal.array() > 0).all()) return false;
-    L.inverse_diagonal = diagonal.cwiseInverse();
-    const int n = int(L.A.rows());
+    Level L;
+    const int n = int(A.rows());
+    L.inverse_diagonal = diagonal.cwiseInverse().cast<float>();
     L.b.resize(n), L.x.resize(n), L.r.resize(n);
     int coarse = 0;
-    if (n > kCoarsestRows) coarse = aggregate(L.A, diagonal, agg, strong);
+    if (n > kCoarsestRows) coarse = aggregate(A, diagonal, agg, strong);
     if (coarse == 0 || coarse > kStalled * n) {
+      L.A = A.cast<float>();
       levels_.push_back(std::move(L));
       break;
     }
-    L.P = smoothed_prolongator(L.A, diagonal, agg, strong, coarse);
-    L.R = L.P.transpose();
-    const Rows AP = L.A * L.P;
-    A = L.R * AP;
+    const RowsD P = smoothed_prolongator(A, diagonal, agg, strong, coarse);
+    const RowsD R = P.transpose();
+    const RowsD AP = A * P;
+    L.A = A.cast<float>(), L.P = P.cast<float>(), L.R = R.cast<float>();
+    A = R * AP;
     levels_.push_back(std::move(L));
   }
-  coarsest_.compute(Eigen::SparseMatrix<double>(levels_.back().A));
+  coarsest_.compute(Eigen::SparseMatrix<double>(A));
   return coarsest_.info() == Eigen::Success && (coarsest_.vectorD().array() > 0).all();
 }
 
 void AggregationMultigrid::cycle(std::size_t l) const {
   const Level& L = levels_[l];
   if (l + 1 == levels_.size()) {
-    L.x = coarsest_.solve(L.b);
+    L.x = coarsest_.solve(L.b.cast<double>()).cast<float>();
     return;
   }
   L.x.setZero();
@@ -216,9 +217,9 @@ void AggregationMultigrid::cycle(std::size_t l) const {
 }
 
 void AggregationMultigrid::apply(const Eigen::Ref<const Eigen::VectorXd>& in, Eigen::Ref<Eigen::VectorXd> out) const {
-  levels_.front().b = in;
+  levels_.front().b = in.cast<float>();
   cycle(0);
-  out = levels_.front().x;
+  out = levels_.front().x.cast<double>();
 }
 
 double AggregationMultigrid::operator_complexity() const {

@@ -35,12 +35,14 @@ class AggregationMultigrid {
   double operator_complexity() const;
 
  private:
-  using Rows = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+  // The cycle runs in single precision: it only preconditions, and half
+  // the bytes make it cheaper where it streams its matrices.
+  using Rows = Eigen::SparseMatrix<float, Eigen::RowMajor, int>;
   struct Level {
     Rows A;                    // the whole symmetric matrix
-    Eigen::VectorXd inverse_diagonal;
+    Eigen::VectorXf inverse_diagonal;
     Rows P, R;                 // to this level from the next coarser one, and back (R = P^T)
-    mutable Eigen::VectorXd b, x, r;
+    mutable Eigen::VectorXf b, x, r;
   };
   void cycle(std::size_t l) const;  // levels_[l].x from levels_[l].b
   std::vector<Level> levels_;

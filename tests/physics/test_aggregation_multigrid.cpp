@@ -103,7 +103,7 @@ TEST_CASE("multigrid: the cycle is symmetric and positive definite") {
   Eigen::VectorXd Mu(10000), Mv(10000);
   M.apply(u, Mu);
   M.apply(v, Mv);
-  CHECK(std::abs(u.dot(Mv) - v.dot(Mu)) <= 1e-12 * u.norm() * Mv.norm());
+  CHECK(std::abs(u.dot(Mv) - v.dot(Mu)) <= 1e-7 * u.norm() * Mv.norm());  // the cycle runs in float
   CHECK(u.dot(Mu) > 0);
   CHECK(v.dot(Mv) > 0);
   // The same cycle twice: the same numbers.
