@@ -90,11 +90,12 @@ double fitted_exponent(const std::vector<double>& n, const std::vector<double>& 
 int usage(const char* argv0, int code) {
   std::fprintf(code ? stderr : stdout,
                "usage: %s [--sizes 10K,40K,160K,640K,1M] [--integrators newton,projective1,...] [--tolerance 1e-3]\n"
-               "          [--cap SECONDS]\n"
+               "          [--cap SECONDS] [--multigrid-rows ROWS]\n"
                "  --sizes        particles (an s x s net, s = round(sqrt(size)))\n"
                "  --integrators  newton (default), newton_factors (no multigrid), leapfrog, projective, projective1 (one iteration per step)\n"
                "  --tolerance    residual relative to the nodal load of 1 N (default 1e-3)\n"
-               "  --cap          wall-time limit of each run (default 120 s)\n",
+               "  --cap          wall-time limit of each run (default 120 s)\n"
+               "  --multigrid-rows  newton: axis blocks this large or larger take the multigrid cycle (default 4000)\n",
                argv0);
   return code;
 }
@@ -104,12 +105,13 @@ int usage(const char* argv0, int code) {
 int main(int argc, char** argv) {
   std::vector<std::size_t> sizes{10000, 40000, 160000, 640000, 1000000};
   double tolerance = 1e-3, cap = 120;
-  const std::vector<Variant> known{{"newton", Integrator::Newton, 4},
+  std::vector<Variant> known{{"newton", Integrator::Newton, 4},
                                    {"newton_factors", Integrator::Newton, 4, std::numeric_limits<int>::max()},
                                    {"leapfrog", Integrator::Leapfrog, 4},
                                    {"projective", Integrator::ProjectiveDynamics, 4},
                                    {"projective1", Integrator::ProjectiveDynamics, 1}};
-  std::vector<Variant> variants{known[0]};
+  std::vector<Variant> variants;
+  std::string chosen = "newton";
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
@@ -120,11 +122,12 @@ int main(int argc, char** argv) {
       if (a == "--sizes") sizes = parse_sizes(value());
       else if (a == "--tolerance") tolerance = std::stod(value());
       else if (a == "--cap") cap = std::stod(value());
-      else if (a == "--integrators") {
-        variants = chosen_by_label(known, value());
-      } else if (a == "-h" || a == "--help") return usage(argv[0], 0);
+      else if (a == "--multigrid-rows") known[0].multigrid_rows = std::stoi(value());
+      else if (a == "--integrators") chosen = value();
+      else if (a == "-h" || a == "--help") return usage(argv[0], 0);
       else throw std::runtime_error("unknown option '" + a + "'");
     }
+    variants = chosen_by_label(known, chosen);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_scaling: %s\n", e.what());
     return usage(argv[0], 2);

@@ -56,10 +56,12 @@ class NewtonSystem {
  public:
   // An axis block with at least this many rows is preconditioned by a
   // multigrid cycle instead of its factors (aggregation_multigrid.hpp).
-  // Measured on the prestressed net: at 10K particles the factors took
-  // 0.048 s and the cycle 0.065 s; at 40K 0.31 s and 0.27 s; at 160K
-  // 3.2 s and 1.5 s. Tests and benchmarks may change it.
-  static inline int multigrid_rows = 25'000;
+  // Measured on the prestressed net, three alternating runs (bench_scaling
+  // --multigrid-rows), cycle against factors: 4 900 particles 0.018-0.021
+  // s against 0.021-0.027 s, 10K 0.047-0.060 against 0.060-0.077, 25.6K
+  // 0.11-0.15 against 0.21-0.24; at 1M 14 s against 62 s. Below it the
+  // factors are as cheap and exact. Tests and benchmarks may change it.
+  static inline int multigrid_rows = 4'000;
   // The first element kind of the model the tangent does not cover
   // ("hinges (3-DOF spline beams)", "goals", ...), or nullptr.
   static const char* unsupported(const Model& m);
