@@ -78,6 +78,58 @@ int aggregate(const RowsD& A, const Eigen::VectorXd& diagonal, std::vector<int>&
   return count;
 }
 
+// A matrix built row by row: each row's entries in any order, duplicates
+// summed, then sorted by column (setFromTriplets sorted them all at once
+// and took longer than the cycle's setup otherwise did).
+class RowBuilder {
+ public:
+  explicit RowBuilder(int cols) : cols_(cols), at_(std::size_t(cols), -1) {}
+  void add(int col, double v) {
+    if (at_[std::size_t(col)] < 0) {
+      at_[std::size_t(col)] = int(row_.size());
+      row_.emplace_back(col, v);
+    } else {
+      row_[std::size_t(at_[std::size_t(col)])].second += v;
+    }
+  }
+  void end_row() {
+    std::sort(row_.begin(), row_.end());
+    for (const auto& [c, v] : row_) {
+      inner_.push_back(c), value_.push_back(v);
+      at_[std::size_t(c)] = -1;
+    }
+    row_.clear();
+    outer_.push_back(int(inner_.size()));
+  }
+  RowsD matrix() const {
+    RowsD M(Eigen::Index(outer_.size() - 1), cols_);
+    M.resizeNonZeros(Eigen::Index(inner_.size()));
+    std::copy(outer_.begin(), outer_.end(), M.outerIndexPtr());
+    std::copy(inner_.begin(), inner_.end(), M.innerIndexPtr());
+    std::copy(value_.begin(), value_.end(), M.valuePtr());
+    return M;
+  }
+
+ private:
+  int cols_;
+  std::vector<int> at_;                    // per column: its place in row_, or -1
+  std::vector<std::pair<int, double>> row_;
+  std::vector<int> outer_{0}, inner_;
+  std::vector<double> value_;
+};
+
+// X Y, row by row (Gustavson): each entry summed in the order of X's row
+// and Y's rows, so the same on every run.
+RowsD product(const RowsD& X, const RowsD& Y) {
+  RowBuilder out(int(Y.cols()));
+  for (int i = 0; i < X.rows(); ++i) {
+    for (RowsD::InnerIterator x(X, i); x; ++x)
+      for (RowsD::InnerIterator y(Y, x.index()); y; ++y) out.add(int(y.index()), x.value() * y.value());
+    out.end_row();
+  }
+  return out.matrix();
+}
+
 // P = (I - omega D_F^-1 A_F) T: T the aggregates' piecewise constants, A_F
 // A with its weak connections added to the diagonal (the rows' sums stay,
 // so constants stay near its null space), omega = 4/3 over a bound of the
@@ -102,22 +154,17 @@ RowsD smoothed_prolongator(const RowsD& A, const Eigen::VectorXd& diagonal, cons
     radius = std::max(radius, 1 + off / d);
   }
   const double omega = 4.0 / 3.0 / radius;
-  std::vector<Eigen::Triplet<double, int>> t;
-  t.reserve(std::size_t(A.nonZeros()));
-  std::vector<std::pair<int, double>> row;
+  RowBuilder P(coarse);
   for (int i = 0; i < n; ++i) {
-    row.clear();
-    if (agg[i] >= 0) row.emplace_back(agg[i], 1.0 - omega);  // the diagonal of A_F over dF: 1
+    if (agg[i] >= 0) P.add(agg[i], 1.0 - omega);  // the diagonal of A_F over dF: 1
     for (int k = outer[i]; k < outer[i + 1]; ++k) {
       const int j = inner[k];
       if (j == i || !strong[std::size_t(k)] || agg[j] < 0) continue;
-      row.emplace_back(agg[j], -omega * value[k] / dF[i]);
+      P.add(agg[j], -omega * value[k] / dF[i]);
     }
-    for (const auto& [c, v] : row) t.emplace_back(i, c, v);  // duplicates are summed
+    P.end_row();
   }
-  RowsD P(n, coarse);
-  P.setFromTriplets(t.begin(), t.end());
-  return P;
+  return P.matrix();
 }
 
 template <class Matrix, class Vector>
@@ -191,9 +238,9 @@ bool AggregationMultigrid::setup(const Lower& lower) {
     }
     const RowsD P = smoothed_prolongator(A, diagonal, agg, strong, coarse);
     const RowsD R = P.transpose();
-    const RowsD AP = A * P;
+    const RowsD AP = product(A, P);
     L.A = A.cast<float>(), L.P = P.cast<float>(), L.R = R.cast<float>();
-    A = R * AP;
+    A = product(R, AP);
     levels_.push_back(std::move(L));
   }
   coarsest_.compute(Eigen::SparseMatrix<double>(A));
