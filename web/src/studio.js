@@ -407,12 +407,13 @@ $('branch').onclick = async () => { await request({ cmd: 'branch', index: Number
 //
 // Without a GPU the browser draws on the CPU (SwiftShader), and a large
 // model costs it more per frame than a live picture allows; part of that is
-// per pixel. So while the picture moves and a draw holds back the next
-// animation frame by more than SLOW_DRAW_MS (a running mean), the page draws
-// at half resolution (a quarter of the pixels); once nothing has changed
-// for REST_MS it draws again at full resolution. studio.drawGap is that mean.
-// Only for a large model (view.large): a small one draws fast, and a slow
-// frame there is the machine's load, which a smaller canvas would not help.
+// per pixel. So while a large model (view.large) moves, the page draws it at
+// half resolution (a quarter of the pixels) under software WebGL, and with
+// a GPU once a draw holds back the next animation frame by more than
+// SLOW_DRAW_MS (a running mean: studio.drawGap); once nothing has changed
+// for REST_MS it draws again at full resolution. A small model draws fast
+// (a slow frame there is the machine's load, which a smaller canvas would
+// not help).
 const SLOW_DRAW_MS = 40, REST_MS = 300;
 let dirty = true, drewAt = null, lastDraw = 0;
 view.controls.addEventListener('change', () => { dirty = true; });
@@ -432,7 +433,10 @@ function loop(now) {
   view.controls.update();
   let dragAt = null;
   if (undrawn) {
-    if (view.setFrame(undrawn)) studio.drawnFrames = (studio.drawnFrames || 0) + 1;
+    if (view.setFrame(undrawn)) {
+      studio.drawnFrames = (studio.drawnFrames || 0) + 1;
+      if (view.large && view.software) view.setScale(0.5);
+    }
     dragAt = undrawn.dragAt ?? null;
     undrawn = null;
   }
