@@ -95,6 +95,7 @@ await run('draw: a dense net', scene('bench/studio_net.lua'), ['--param', 'parti
   const dense = await until(page, () => studio.view.dots.visible && studio.view.scale === 1 &&
                                       { edge: studio.view.edgePixels, dots: studio.view.dots.geometry.drawRange.count, bars: studio.view.patchBars.visible });
   check(dense.edge < 6 && !dense.bars, `far away the net's edges are ${dense.edge.toFixed(1)} px on screen and its bars are left out`);
+  await screenshot(page, 'studio-dense.png');
   const shown = await page.evaluate(() => {
     const t = studio.topology, out = [];
     let simple = -1;
