@@ -21,6 +21,15 @@ constexpr int kMaxIterations = 1000;
 // (b, a) are one entry, whichever row is larger.
 constexpr int kPairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 0}, {2, 0}, {2, 1}};
 
+// Where entry (r, c) or (c, r), whichever is in the lower triangle, sits
+// in a pattern's values; -1 for a row or column that is not there (-1).
+int lower_entry(const Eigen::SparseMatrix<double>& lower, int r, int c) {
+  if (r < 0 || c < 0) return -1;
+  if (c > r) std::swap(r, c);
+  const int* inner = lower.innerIndexPtr();
+  return int(std::lower_bound(inner + lower.outerIndexPtr()[c], inner + lower.outerIndexPtr()[c + 1], r) - inner);
+}
+
 // K_e of a bar at x; false for a slack cable (no force, no stiffness).
 bool bar_tangent(const Bar& b, const Vec3* x, Mat3& Ke) {
   const Vec3 d = x[b.j] - x[b.i];
@@ -119,6 +128,7 @@ const char* NewtonSystem::unsupported(const Model& m) {
 
 void NewtonSystem::build_pattern(const Model& m) {
   const Particles& P = m.particles;
+  const std::array<bool, 3> multigrid{axis_[0].multigrid, axis_[1].multigrid, axis_[2].multigrid};
   capacity_ = P.capacity();
   row_.assign(3 * capacity_, -1);
   rows_ = 0;
@@ -206,6 +216,7 @@ void NewtonSystem::build_pattern(const Model& m) {
   std::copy(inner.begin(), inner.end(), K.innerIndexPtr());
   std::fill(K.valuePtr(), K.valuePtr() + inner.size(), 0.0);
   const bool same = analysed_ && K.rows() == K_.rows() && K.nonZeros() == K_.nonZeros() &&
+                    multigrid == std::array<bool, 3>{axis_[0].multigrid, axis_[1].multigrid, axis_[2].multigrid} &&
                     std::equal(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1, K_.outerIndexPtr()) &&
                     std::equal(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros(), K_.innerIndexPtr());
   K_ = std::move(K);
@@ -213,12 +224,7 @@ void NewtonSystem::build_pattern(const Model& m) {
   // Where each bar's and each particle's entries sit in K_'s values, so
   // that assembling is a scatter without searches (binary searches per
   // entry took 11 % of the time on the 128 x 128 net).
-  auto slot = [&](int r, int c) -> int {
-    if (r < 0 || c < 0) return -1;
-    if (c > r) std::swap(r, c);
-    const int* inner = K_.innerIndexPtr();
-    return int(std::lower_bound(inner + K_.outerIndexPtr()[c], inner + K_.outerIndexPtr()[c + 1], r) - inner);
-  };
+  auto slot = [&](int r, int c) { return lower_entry(K_, r, c); };
   own_slot_.assign(6 * capacity_, -1);
   for (ParticleId p = 0; p < capacity_; ++p)
     for (int k = 0; k < 6; ++k)
@@ -254,13 +260,8 @@ void NewtonSystem::build_pattern(const Model& m) {
   for (std::size_t e = 0; e < m.bars.awake; ++e) {
     const Bar& b = m.bars[e];
     for (int a = 0; a < 3; ++a) {
-      auto slot = [&](int r, int c) -> int {
-        if (r < 0 || c < 0) return -1;
-        if (c > r) std::swap(r, c);
-        r -= offset_[a], c -= offset_[a];
-        const Sparse& A = axis_[a].A;
-        const int* inner = A.innerIndexPtr();
-        return int(std::lower_bound(inner + A.outerIndexPtr()[c], inner + A.outerIndexPtr()[c + 1], r) - inner);
+      auto slot = [&](int r, int c) {
+        return r < 0 || c < 0 ? -1 : lower_entry(axis_[a].A, r - offset_[a], c - offset_[a]);
       };
       const int ri = row_[3 * b.i + a], rj = row_[3 * b.j + a];
       axis_slot_[9 * e + 3 * a] = slot(ri, ri);
