@@ -118,6 +118,63 @@ void Solver::kick_drift(bool whole_kick) {
   half_step_ = true;
 }
 
+namespace {
+
+// fused_kick_drift's kick of one chunk's particles, with every pointer a
+// local (no reloads through captured references) and the free axes of a
+// lock looked up; the arithmetic of kick_drift, term for term.
+struct KickArgs {
+  const std::uint8_t* lock;
+  const double *point_mass, *lumped_mass, *S;
+  const Vec3* F;
+  Vec3 *v, *x, *xn;
+  double mass_scale, keep, first_B_dt, dt;  // first_B_dt = first * B * dt
+};
+struct KickSums {
+  double ke = 0, momentum2 = 0, residual2 = 0;
+  bool bad = false;
+};
+
+template <bool kPhysical, bool kDrift>
+KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, std::uint32_t end, const KickArgs& a) {
+  static const Vec3 free_of[8] = {free_axes(0), free_axes(1), free_axes(2), free_axes(3),
+                                  free_axes(4), free_axes(5), free_axes(6), free_axes(7)};
+  const std::uint8_t* __restrict lock = a.lock;
+  const double* __restrict S = a.S;
+  const Vec3* __restrict F = a.F;
+  Vec3* __restrict v = a.v;
+  const Vec3* __restrict x = a.x;
+  Vec3* __restrict xn = a.xn;
+  const double mass_scale = a.mass_scale, keep = a.keep, first_B_dt = a.first_B_dt, dt = a.dt;
+  KickSums sums;
+  for (std::uint32_t n = begin; n < end; ++n) {
+    const ParticleId p = ids[n];
+    const Vec3 free = free_of[lock[p] & kLockTranslation];
+    double M;
+    if constexpr (kPhysical) {
+      const double m = a.point_mass[p] + a.lumped_mass[p];
+      M = m > 0 || !free.isZero() ? m : 1.0;
+    } else {
+      M = mass_scale * S[p];
+    }
+    const Vec3 f = F[p];
+    if (!f.allFinite() || !std::isfinite(S[p]) || !(M > 0)) [[unlikely]] {
+      sums.bad = true;
+      continue;
+    }
+    sums.residual2 = std::max(sums.residual2, f.cwiseProduct(free).squaredNorm());
+    const Vec3 vn = (keep * v[p] + (first_B_dt / M) * f).cwiseProduct(free);  // eq. 3.11 / 3.26
+    v[p] = vn;
+    const double v2 = vn.squaredNorm();
+    sums.ke += M * v2;  // eq. 3.28
+    sums.momentum2 = std::max(sums.momentum2, M * M * v2);
+    if constexpr (kDrift) xn[p] = x[p] + dt * vn;  // eq. 3.12, taken only if the step is an ordinary one
+  }
+  return sums;
+}
+
+}  // namespace
+
 bool Solver::fused_kick_drift_applies() const {
   const Integrator i = settings.integrator;
   return (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) && model_.hinges.awake == 0 &&
@@ -165,25 +222,20 @@ void Solver::fused_kick_drift(bool whole_kick) {
     const double M = point_mass[p] + lumped_mass[p];
     return M > 0 || !free.isZero() ? M : 1.0;
   };
+  const KickArgs args{lock, point_mass, lumped_mass, S, F, v, x, xn, mass_scale, keep, first * B * dt, dt};
   auto kick_chunk = [&](std::uint32_t c) {
     const BarChunks::Chunk& ch = chunks.chunks[c];
     chunk_inbox(ch, F, S);
-    ChunkSums sums;
-    for (std::uint32_t n = ch.particles_begin; n < ch.particles_end; ++n) {
-      const ParticleId p = chunks.particles[n];
-      const Vec3 free = free_axes(lock[p]);
-      const double M = mass_of(p, free);
-      if (!F[p].allFinite() || !std::isfinite(S[p]) || !(M > 0)) [[unlikely]] {
-        sums.bad = true;
-        continue;
-      }
-      sums.residual2 = std::max(sums.residual2, F[p].cwiseProduct(free).squaredNorm());
-      v[p] = (keep * v[p] + (first * B * dt / M) * F[p]).cwiseProduct(free);  // eq. 3.11 / 3.26
-      sums.ke += M * v[p].squaredNorm();                                      // eq. 3.28
-      sums.momentum2 = std::max(sums.momentum2, M * M * v[p].squaredNorm());
-      if (xn) xn[p] = x[p] + dt * v[p];  // eq. 3.12, taken only if the step is an ordinary one
-    }
-    chunk_sums_[c] = sums;
+    const ParticleId* ids = chunks.particles.data();
+    const KickSums k = physical ? (xn ? kick_particles<true, true>(ids, ch.particles_begin, ch.particles_end, args)
+                                      : kick_particles<true, false>(ids, ch.particles_begin, ch.particles_end, args))
+                                : (xn ? kick_particles<false, true>(ids, ch.particles_begin, ch.particles_end, args)
+                                      : kick_particles<false, false>(ids, ch.particles_begin, ch.particles_end, args));
+    ChunkSums& sums = chunk_sums_[c];
+    sums.ke = k.ke;
+    sums.momentum2 = k.momentum2;
+    sums.residual2 = k.residual2;
+    sums.bad = k.bad;
   };
   for_chunks([&](std::uint32_t c) { chunk_bar_forces(chunks.chunks[c], x, F, S); }, kick_chunk);
   ++evaluations_;
