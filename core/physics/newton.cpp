@@ -184,7 +184,7 @@ void NewtonSystem::build_pattern(const Model& m) {
   };
   each_pair([&](ParticleId i, ParticleId j) { ++degree[i + 1], ++degree[j + 1]; });
   for (std::size_t p = 0; p < capacity_; ++p) degree[p + 1] += degree[p];
-  std::vector<ParticleId> neighbour(std::size_t(degree[capacity_]));
+  std::vector<ParticleId> neighbour(static_cast<std::size_t>(degree[capacity_]));
   {
     std::vector<int> fill(degree.begin(), degree.end() - 1);
     each_pair([&](ParticleId i, ParticleId j) { neighbour[fill[i]++] = j, neighbour[fill[j]++] = i; });
