@@ -40,8 +40,19 @@ struct BarBlock {
 };
 
 // Eq. 3.32 (no tension in a slack cable), eq. 3.33's T / L and eq. 3.35.
+// With GCC on x86-64 the loop is compiled three times, for AVX-512, AVX2
+// and the portable SSE2, and the CPU picks one when the program starts
+// (target_clones): 4 bars per instruction instead of 2, the same binary on
+// every x86-64. Each lane rounds as the scalar code does (no fused
+// multiply-adds: -ffp-contract=off for this file, core/CMakeLists.txt), so
+// every copy gives the same numbers bit for bit.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__AVX2__)
+#define TENDRIL_BAR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define TENDRIL_BAR_CLONES
+#endif
 template <bool kUnitFactor>
-void bar_block(BarBlock& b, std::uint32_t n, const double* __restrict k, const double* __restrict rest,
+TENDRIL_BAR_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* __restrict k, const double* __restrict rest,
                const double* __restrict pre, const std::uint8_t* __restrict cable, double gf) {
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
