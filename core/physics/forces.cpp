@@ -70,6 +70,52 @@ TENDRIL_BAR_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* __
   }
 }
 
+// Spline-beam hinges the same way (eq. 3.41-3.43): the three chords
+// gathered, one vectorised loop for lengths, stiffnesses and the two shear
+// forces, then the scatter in the model's order. Term for term the
+// arithmetic of hinge_forces (element_forces.hpp), Eigen's norm, cross and
+// normalized written out in their order; a straight or degenerate hinge
+// (no plane) gets +0 forces, as hinge_forces returns.
+constexpr std::uint32_t kHingeBlock = 64;
+
+struct HingeBlock {
+  alignas(64) double ax[kHingeBlock], ay[kHingeBlock], az[kHingeBlock];
+  alignas(64) double bx[kHingeBlock], by[kHingeBlock], bz[kHingeBlock];
+  alignas(64) double cx[kHingeBlock], cy[kHingeBlock], cz[kHingeBlock];
+  alignas(64) double EI[kHingeBlock], rest[kHingeBlock];
+  alignas(64) double k[kHingeBlock], fix[kHingeBlock], fiy[kHingeBlock], fiz[kHingeBlock];
+  alignas(64) double fkx[kHingeBlock], fky[kHingeBlock], fkz[kHingeBlock];
+};
+
+TENDRIL_BAR_CLONES void hinge_block(HingeBlock& h, std::uint32_t n) {
+#pragma omp simd
+  for (std::uint32_t m = 0; m < n; ++m) {
+    const double ax = h.ax[m], ay = h.ay[m], az = h.az[m], bx = h.bx[m], by = h.by[m], bz = h.bz[m];
+    const double cx = h.cx[m], cy = h.cy[m], cz = h.cz[m], EI = h.EI[m];
+    const double La = std::sqrt(ax * ax + ay * ay + az * az), Lb = std::sqrt(bx * bx + by * by + bz * bz),
+                 Lc = std::sqrt(cx * cx + cy * cy + cz * cz);
+    const double ka = 4 * EI / (La * La * La), kb = 4 * EI / (Lb * Lb * Lb);
+    h.k[m] = ka + kb;
+    const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;  // a x b
+    const double nn = std::sqrt(nx * nx + ny * ny + nz * nz);
+    const bool bends = !(nn <= 0 || Lc <= 0);
+    const double sin_alpha = nn / (La * Lb);
+    const double M = EI * (2 * sin_alpha / Lc - h.rest[m]);
+    // a x nrm and b x nrm, normalized (divided by their norm when it is > 0)
+    const double ux = ay * nz - az * ny, uy = az * nx - ax * nz, uz = ax * ny - ay * nx;
+    const double vx = by * nz - bz * ny, vy = bz * nx - bx * nz, vz = bx * ny - by * nx;
+    const double zu = ux * ux + uy * uy + uz * uz, zv = vx * vx + vy * vy + vz * vz;
+    const double ru = zu > 0 ? std::sqrt(zu) : 1.0, rv = zv > 0 ? std::sqrt(zv) : 1.0;
+    const double Ma = M / La, Mb = M / Lb;
+    h.fix[m] = bends ? Ma * (zu > 0 ? ux / ru : ux) : 0.0;
+    h.fiy[m] = bends ? Ma * (zu > 0 ? uy / ru : uy) : 0.0;
+    h.fiz[m] = bends ? Ma * (zu > 0 ? uz / ru : uz) : 0.0;
+    h.fkx[m] = bends ? Mb * (zv > 0 ? vx / rv : vx) : 0.0;
+    h.fky[m] = bends ? Mb * (zv > 0 ? vy / rv : vy) : 0.0;
+    h.fkz[m] = bends ? Mb * (zv > 0 ? vz / rv : vz) : 0.0;
+  }
+}
+
 }  // namespace
 
 void Solver::chunk_bar_forces(const BarChunks::Chunk& c, const Vec3* x, Vec3* F, double* S) const {
@@ -205,15 +251,33 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
   const double gf = settings.geometric_factor;
   // Only awake elements: those touching a passive particle (multi-
   // resolution, thesis 5.5.2.3) sit behind ElementBuffer::awake, unvisited.
-  for (const Hinge* hp = model_.hinges.awake_begin(); hp != model_.hinges.awake_end(); ++hp) {
-    const Hinge& h = *hp;
-    const HingeForces f = hinge_forces(h, x);
-    if (!std::isfinite(f.ka + f.kb)) [[unlikely]]
-      throw_degenerate_hinge(model_, h, x);  // a zero-length link (coincident particles): stop, naming them
-    S[h.j] += f.ka + f.kb;
-    F[h.i] += f.fi;
-    F[h.k] += f.fk;
-    F[h.j] -= f.fi + f.fk;
+  const Hinge* hinges = model_.hinges.awake_begin();
+  const std::uint32_t n_hinges = std::uint32_t(model_.hinges.awake_end() - hinges);
+  if (n_hinges > 0) {
+    HingeBlock hb;
+    for (std::uint32_t e0 = 0; e0 < n_hinges; e0 += kHingeBlock) {
+      const std::uint32_t n = std::min(kHingeBlock, n_hinges - e0);
+      for (std::uint32_t m = 0; m < n; ++m) {
+        const Hinge& h = hinges[e0 + m];
+        const Vec3 a = x[h.j] - x[h.i], b = x[h.k] - x[h.j], c = x[h.k] - x[h.i];
+        hb.ax[m] = a.x(), hb.ay[m] = a.y(), hb.az[m] = a.z();
+        hb.bx[m] = b.x(), hb.by[m] = b.y(), hb.bz[m] = b.z();
+        hb.cx[m] = c.x(), hb.cy[m] = c.y(), hb.cz[m] = c.z();
+        hb.EI[m] = h.EI;
+        hb.rest[m] = h.rest_curvature;
+      }
+      hinge_block(hb, n);
+      for (std::uint32_t m = 0; m < n; ++m) {
+        const Hinge& h = hinges[e0 + m];
+        if (!std::isfinite(hb.k[m])) [[unlikely]]
+          throw_degenerate_hinge(model_, h, x);  // a zero-length link (coincident particles): stop, naming them
+        const Vec3 fi(hb.fix[m], hb.fiy[m], hb.fiz[m]), fk(hb.fkx[m], hb.fky[m], hb.fkz[m]);
+        S[h.j] += hb.k[m];
+        F[h.i] += fi;
+        F[h.k] += fk;
+        F[h.j] -= fi + fk;
+      }
+    }
   }
   for (const Beam6* bp = model_.beam6s.awake_begin(); bp != model_.beam6s.awake_end(); ++bp) {
     const Beam6& b = *bp;
