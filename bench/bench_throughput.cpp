@@ -109,6 +109,23 @@ void build_beam_grid(Model& m, int s) {
   }
 }
 
+// The same woven grid with every beam switched to 6 DOF (eq. 3.44-3.50):
+// Beam6 elements and rotations at every particle.
+void build_beam6_grid(Model& m, int s) {
+  std::vector<ParticleId> grid = supported_grid(m, s);
+  std::vector<ParticleId> line(s);
+  std::vector<BlockId> beams;
+  for (int r = 0; r < s; ++r) {
+    for (int c = 0; c < s; ++c) line[c] = grid[r * s + c];
+    beams.push_back(m.add_beam(line, kBeamSection));
+  }
+  for (int c = 0; c < s; ++c) {
+    for (int r = 0; r < s; ++r) line[r] = grid[r * s + c];
+    beams.push_back(m.add_beam(line, kBeamSection));
+  }
+  for (BlockId b : beams) m.set_beam_formulation(b, 6);
+}
+
 // The bar net's patch switched to CST form-finding (thesis 5.5.2.2): two
 // triangles per quad, 1 kN/m in warp and weft; only the boundary keeps bars.
 void build_cst_membrane(Model& m, int s) {
@@ -250,12 +267,14 @@ int main(int argc, char** argv) {
     return usage(argv[0], 2);
   }
 
-  const Case cases[] = {{"bar net", build_bar_net}, {"beam grid", build_beam_grid}, {"cst membrane", build_cst_membrane}};
+  const Case cases[] = {{"bar net", build_bar_net}, {"beam grid", build_beam_grid},
+                        {"beam6 grid", build_beam6_grid}, {"cst membrane", build_cst_membrane}};
   std::puts("bench_throughput: Solver::step(), Leapfrog + kinetic damping");
   std::puts("  bar net   : s x s planar quad grid patch (add_quad_grid), bars EA=1e5 N, prestress 1e3 N;");
   std::puts("              boundary locked, 1 N out-of-plane load on every interior particle");
   std::puts("  beam grid : s beams along x and s along y through an s x s grid, every particle a crossing");
   std::puts("              shared by two 3-DOF spline beams (EA=1e6 N, EI=1e2 N m^2); same supports and load");
+  std::puts("  beam6 grid: the beam grid with every beam 6 DOF (Beam6 elements, rotations at every particle)");
   std::puts("  cst membrane: the bar net as CST form-finding, 2 triangles per quad, 1 kN/m both ways");
   std::puts("  p-it = particle-iteration (one particle advanced one step); RSS = resident set growth while");
   std::puts("  building the model (after malloc_trim), B/particle = that growth per particle");
