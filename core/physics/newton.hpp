@@ -30,7 +30,7 @@
 // Large blocks (multigrid_rows) get a smoothed-aggregation multigrid
 // cycle instead of their factors: a 2-D net's factors cost n^1.5 to
 // compute and n log n to apply, the cycle n (on the 1000 x 1000 net the
-// solve went from 60 s to 16 s); its hierarchy is built again when a solve
+// solve went from 62 s to 13 s); its hierarchy is built again when a solve
 // took more than 8 iterations.
 // Rows are ordered axis by axis (every free x, then y, then z), each in
 // the fill-reducing order (AMD) of its block, so an axis block is a
