@@ -135,6 +135,14 @@ struct KickSums {
   bool bad = false;
 };
 
+// A particle's physical mass as the step uses it: 1 kg for a massless
+// particle locked on every axis (it does not move), else its mass (0 or less
+// is refused by the caller, as prepare_masses does).
+inline double physical_mass(double point, double lumped, const Vec3& free) {
+  const double m = point + lumped;
+  return m > 0 || !free.isZero() ? m : 1.0;
+}
+
 template <bool kPhysical, bool kDrift>
 KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, std::uint32_t end, const KickArgs& a) {
   static const Vec3 free_of[8] = {free_axes(0), free_axes(1), free_axes(2), free_axes(3),
@@ -152,8 +160,7 @@ KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, s
     const Vec3 free = free_of[lock[p] & kLockTranslation];
     double M;
     if constexpr (kPhysical) {
-      const double m = a.point_mass[p] + a.lumped_mass[p];
-      M = m > 0 || !free.isZero() ? m : 1.0;
+      M = physical_mass(a.point_mass[p], a.lumped_mass[p], free);
     } else {
       M = mass_scale * S[p];
     }
@@ -218,9 +225,7 @@ void Solver::fused_kick_drift(bool whole_kick) {
   // The mass of eq. 3.4 (or the physical one) as prepare_masses sets it;
   // 0 when the step cannot use it.
   auto mass_of = [&](ParticleId p, const Vec3& free) {
-    if (!physical) return mass_scale * S[p];
-    const double M = point_mass[p] + lumped_mass[p];
-    return M > 0 || !free.isZero() ? M : 1.0;
+    return physical ? physical_mass(point_mass[p], lumped_mass[p], free) : mass_scale * S[p];
   };
   const KickArgs args{lock, point_mass, lumped_mass, S, F, v, x, xn, mass_scale, keep, first * B * dt, dt};
   auto kick_chunk = [&](std::uint32_t c) {
@@ -231,11 +236,7 @@ void Solver::fused_kick_drift(bool whole_kick) {
                                       : kick_particles<true, false>(ids, ch.particles_begin, ch.particles_end, args))
                                 : (xn ? kick_particles<false, true>(ids, ch.particles_begin, ch.particles_end, args)
                                       : kick_particles<false, false>(ids, ch.particles_begin, ch.particles_end, args));
-    ChunkSums& sums = chunk_sums_[c];
-    sums.ke = k.ke;
-    sums.momentum2 = k.momentum2;
-    sums.residual2 = k.residual2;
-    sums.bad = k.bad;
+    chunk_sums_[c] = {k.ke, k.momentum2, k.residual2, k.bad};
   };
   for_chunks([&](std::uint32_t c) { chunk_bar_forces(chunks.chunks[c], x, F, S); }, kick_chunk);
   ++evaluations_;
