@@ -15,7 +15,12 @@
 // runs the page's script), and the resolution the page drew at (1: full,
 // 0.5: half, while a large model moves and draws slowly: web/src/studio.js).
 // STUDIO_WEB=DIR serves another build of the page (e.g. an older one, to
-// compare on the same machine in the same session).
+// compare on the same machine in the same session). STUDIO_PIN=1 keeps the
+// studio on core 0 and this script with its Chromium on core 1: the page
+// then has a core of its own, as on a designer's machine, where a GPU
+// draws it, and the wall cost measures what the page costs the solver
+// rather than the software rasteriser's share of two cores.
+import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -27,6 +32,10 @@ const sizes = (process.argv[2] || '2000,20000,100000').split(',').map(Number);
 const seconds = Number(process.argv[3] || 5);
 const net = path.join(here, 'studio_net.lua');
 const web = process.env.STUDIO_WEB ? ['--web', path.resolve(process.env.STUDIO_WEB)] : [];
+const pinned = process.env.STUDIO_PIN === '1';
+// Every thread of a process on one core; children started later inherit it.
+const pin = (pid, core) => execFileSync('taskset', ['-a', '-p', '-c', String(core), String(pid)], { stdio: 'ignore' });
+if (pinned) pin(process.pid, 1);
 // CPU seconds the studio process has used (user + system), from /proc: on a
 // loaded machine the wall-clock steps/s measure the machine, the CPU time per
 // step measures what a page costs the studio itself.
@@ -113,6 +122,7 @@ const median = (xs) => { xs.sort((a, b) => a - b); return xs.length ? xs[Math.fl
 const rows = [];
 for (const size of sizes) {
   const studio = await startStudio(net, ['--param', `particles=${size}`, '--speed', '0', '--tolerance', '1e-12', '--no-wait', ...web]);
+  if (pinned) pin(studio.proc.pid, 0);
   const browser = await openBrowser();
   try {
     say(`${size} particles: steps without a page`);
@@ -165,7 +175,7 @@ const renderer = await (async () => {  // what draws the page's WebGL (a softwar
   await browser.close();
   return name.includes('SwiftShader') ? 'SwiftShader (software)' : name;
 })();
-console.log(`\nstudio: a headless Chromium page asking 60 frames/s (load average ${loadAtStart} at the start, ${load} at the end, on ${(await import('node:os')).cpus().length} cores; WebGL ${renderer})`);
+console.log(`\nstudio: a headless Chromium page asking 60 frames/s (load average ${loadAtStart} at the start, ${load} at the end, on ${(await import('node:os')).cpus().length} cores; WebGL ${renderer})${pinned ? '; pinned: the studio on core 0, Chromium on core 1' : ''}`);
 console.log('frames/s got, drawn: received by the page and drawn by it; not drawing: the same page with ?draw=0 (no WebGL), and the steps/s beside it');
 console.log('drag->frame: median over the drags of one gesture, to the frame received / drawn; CPU ms/step: the studio process\'s own CPU time per solver step;');
 console.log('server µs/step: of that CPU time, the threads other than the solver\'s (they send the frames); the solver thread\'s own grows too when the browser competes for the cores and caches');
