@@ -9,6 +9,7 @@
 
 #include "physics/element_forces.hpp"
 #include "physics/numerical_errors.hpp"
+#include "physics/simd_clones.hpp"
 #include "physics/solver.hpp"
 #include "physics/workers.hpp"
 
@@ -39,20 +40,10 @@ struct BarBlock {
   alignas(64) double L[kBarBlock], fx[kBarBlock], fy[kBarBlock], fz[kBarBlock], s[kBarBlock];
 };
 
-// Eq. 3.32 (no tension in a slack cable), eq. 3.33's T / L and eq. 3.35.
-// With GCC on x86-64 the loop is compiled three times, for AVX-512, AVX2
-// and the portable SSE2, and the CPU picks one when the program starts
-// (target_clones): 4 bars per instruction instead of 2, the same binary on
-// every x86-64. Each lane rounds as the scalar code does (no fused
-// multiply-adds: -ffp-contract=off for this file, core/CMakeLists.txt), so
-// every copy gives the same numbers bit for bit.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__AVX2__)
-#define TENDRIL_BAR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define TENDRIL_BAR_CLONES
-#endif
+// Eq. 3.32 (no tension in a slack cable), eq. 3.33's T / L and eq. 3.35,
+// in three copies (simd_clones.hpp).
 template <bool kUnitFactor>
-TENDRIL_BAR_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* __restrict k, const double* __restrict rest,
+TENDRIL_SIMD_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* __restrict k, const double* __restrict rest,
                const double* __restrict pre, const std::uint8_t* __restrict cable, double gf) {
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
@@ -87,7 +78,7 @@ struct HingeBlock {
   alignas(64) double fkx[kHingeBlock], fky[kHingeBlock], fkz[kHingeBlock];
 };
 
-TENDRIL_BAR_CLONES void hinge_block(HingeBlock& h, std::uint32_t n) {
+TENDRIL_SIMD_CLONES void hinge_block(HingeBlock& h, std::uint32_t n) {
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
     const double ax = h.ax[m], ay = h.ay[m], az = h.az[m], bx = h.bx[m], by = h.by[m], bz = h.bz[m];
@@ -113,6 +104,95 @@ TENDRIL_BAR_CLONES void hinge_block(HingeBlock& h, std::uint32_t n) {
     h.fkx[m] = bends ? Mb * (zv > 0 ? vx / rv : vx) : 0.0;
     h.fky[m] = bends ? Mb * (zv > 0 ? vy / rv : vy) : 0.0;
     h.fkz[m] = bends ? Mb * (zv > 0 ? vz / rv : vz) : 0.0;
+  }
+}
+
+// 6-DOF beams the same way (eq. 3.44-3.50): each end's frame q * end
+// composed while gathering (Eigen's quaternion product, as beam6_ends), the
+// chord, then one vectorised loop for the rotation matrices, the element
+// frame, the included angles, the end moments, the forces and the direct
+// stiffnesses, then the scatter in the model's order. Term for term the
+// arithmetic of beam6_ends (element_forces.hpp): Eigen's toRotationMatrix,
+// norm, dot and cross written out in their order. An element the loop
+// cannot finish (no length, or ends whose mean z lies along the chord, where
+// element_frame takes another axis) is marked and evaluated again by
+// beam6_ends in the scatter.
+constexpr std::uint32_t kBeam6Block = 64;
+
+struct Beam6Block {
+  alignas(64) double dx[kBeam6Block], dy[kBeam6Block], dz[kBeam6Block];
+  alignas(64) double ax[kBeam6Block], ay[kBeam6Block], az[kBeam6Block], aw[kBeam6Block];  // q[i] * end_i
+  alignas(64) double bx[kBeam6Block], by[kBeam6Block], bz[kBeam6Block], bw[kBeam6Block];  // q[j] * end_j
+  alignas(64) double L[kBeam6Block], EA[kBeam6Block], EIy[kBeam6Block], EIz[kBeam6Block], GJ[kBeam6Block];
+  alignas(64) double pre[kBeam6Block];
+  alignas(64) double k[kBeam6Block], kr[kBeam6Block], fx[kBeam6Block], fy[kBeam6Block], fz[kBeam6Block];
+  alignas(64) double tax[kBeam6Block], tay[kBeam6Block], taz[kBeam6Block];
+  alignas(64) double tbx[kBeam6Block], tby[kBeam6Block], tbz[kBeam6Block];
+  alignas(64) double redo[kBeam6Block];  // 1: beam6_ends takes it (a double: a byte would keep the loop scalar)
+};
+
+TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, std::uint32_t n, double gf) {
+#pragma omp simd
+  for (std::uint32_t m = 0; m < n; ++m) {
+    const double L = b.L[m], EA = b.EA[m], EIy = b.EIy[m], EIz = b.EIz[m], GJ = b.GJ[m];
+    const double dx = b.dx[m], dy = b.dy[m], dz = b.dz[m];
+    const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double N = b.pre[m] + EA * (l - L) / L;  // eq. 3.32 with K = EA / L
+    const double EI = EIy < EIz ? EIz : EIy;
+    const double k_axial = EA / L, k_bending = kBendingMassFactor * 12 * EI / (L * L * L);
+    b.k[m] = (k_axial < k_bending ? k_bending : k_axial) + (l > 0 && N > 0 ? gf * N / l : 0.0);  // eq. 3.47
+    const double kr_torsion = GJ / L, kr_bending = kBendingMassFactor * 4 * EI / L;
+    b.kr[m] = kr_torsion < kr_bending ? kr_bending : kr_torsion;  // eq. 3.49
+    // Ea, Eb: Eigen's toRotationMatrix of q * end.
+    double Ea[3][3], Eb[3][3];
+    {
+      const double x = b.ax[m], y = b.ay[m], z = b.az[m], w = b.aw[m];
+      const double tx = 2.0 * x, ty = 2.0 * y, tz = 2.0 * z;
+      const double twx = tx * w, twy = ty * w, twz = tz * w, txx = tx * x, txy = ty * x, txz = tz * x;
+      const double tyy = ty * y, tyz = tz * y, tzz = tz * z;
+      Ea[0][0] = 1.0 - (tyy + tzz), Ea[0][1] = txy - twz, Ea[0][2] = txz + twy;
+      Ea[1][0] = txy + twz, Ea[1][1] = 1.0 - (txx + tzz), Ea[1][2] = tyz - twx;
+      Ea[2][0] = txz - twy, Ea[2][1] = tyz + twx, Ea[2][2] = 1.0 - (txx + tyy);
+    }
+    {
+      const double x = b.bx[m], y = b.by[m], z = b.bz[m], w = b.bw[m];
+      const double tx = 2.0 * x, ty = 2.0 * y, tz = 2.0 * z;
+      const double twx = tx * w, twy = ty * w, twz = tz * w, txx = tx * x, txy = ty * x, txz = tz * x;
+      const double tyy = ty * y, tyz = tz * y, tzz = tz * z;
+      Eb[0][0] = 1.0 - (tyy + tzz), Eb[0][1] = txy - twz, Eb[0][2] = txz + twy;
+      Eb[1][0] = txy + twz, Eb[1][1] = 1.0 - (txx + tzz), Eb[1][2] = tyz - twx;
+      Eb[2][0] = txz - twy, Eb[2][1] = tyz + twx, Eb[2][2] = 1.0 - (txx + tyy);
+    }
+    const double ux0 = dx / l, ux1 = dy / l, ux2 = dz / l;  // eq. 3.45
+    // element_frame: y = (Ea z + Eb z) x ux, normalized; z = ux x y.
+    const double s0 = Ea[0][2] + Eb[0][2], s1 = Ea[1][2] + Eb[1][2], s2 = Ea[2][2] + Eb[2][2];
+    const double y0 = s1 * ux2 - s2 * ux1, y1 = s2 * ux0 - s0 * ux2, y2 = s0 * ux1 - s1 * ux0;
+    const double yn = std::sqrt(y0 * y0 + y1 * y1 + y2 * y2);
+    b.redo[m] = !(l > 0) || !(yn > 1e-12) ? 1.0 : 0.0;
+    const double uy0 = y0 / yn, uy1 = y1 / yn, uy2 = y2 / yn;
+    const double uz0 = ux1 * uy2 - ux2 * uy1, uz1 = ux2 * uy0 - ux0 * uy2, uz2 = ux0 * uy1 - ux1 * uy0;
+    // Eq. 3.44.
+    const double za = Ea[0][0] * uy0 + Ea[1][0] * uy1 + Ea[2][0] * uy2;
+    const double zb = Eb[0][0] * uy0 + Eb[1][0] * uy1 + Eb[2][0] * uy2;
+    const double ya = -(Ea[0][0] * uz0 + Ea[1][0] * uz1 + Ea[2][0] * uz2);
+    const double yb = -(Eb[0][0] * uz0 + Eb[1][0] * uz1 + Eb[2][0] * uz2);
+    const double twist = 0.5 * ((Eb[0][1] * Ea[0][2] + Eb[1][1] * Ea[1][2] + Eb[2][1] * Ea[2][2]) -
+                                (Ea[0][1] * Eb[0][2] + Ea[1][1] * Eb[1][2] + Ea[2][1] * Eb[2][2]));
+    // Eq. 3.46.
+    const double cz = 2 * EIz / L, cy = 2 * EIy / L;
+    const double Mza = cz * (2 * za + zb), Mzb = cz * (za + 2 * zb);
+    const double Mya = cy * (2 * ya + yb), Myb = cy * (ya + 2 * yb);
+    const double Mx = GJ / L * twist;
+    const double ta0 = Mx * ux0 - Mya * uy0 - Mza * uz0, ta1 = Mx * ux1 - Mya * uy1 - Mza * uz1,
+                 ta2 = Mx * ux2 - Mya * uy2 - Mza * uz2;
+    const double tb0 = -Mx * ux0 - Myb * uy0 - Mzb * uz0, tb1 = -Mx * ux1 - Myb * uy1 - Mzb * uz1,
+                 tb2 = -Mx * ux2 - Myb * uy2 - Mzb * uz2;
+    b.tax[m] = ta0, b.tay[m] = ta1, b.taz[m] = ta2;
+    b.tbx[m] = tb0, b.tby[m] = tb1, b.tbz[m] = tb2;
+    const double t0 = ta0 + tb0, t1 = ta1 + tb1, t2 = ta2 + tb2;
+    b.fx[m] = (ux1 * t2 - ux2 * t1) / l - N * ux0;
+    b.fy[m] = (ux2 * t0 - ux0 * t2) / l - N * ux1;
+    b.fz[m] = (ux0 * t1 - ux1 * t0) / l - N * ux2;
   }
 }
 
@@ -279,17 +359,44 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
       }
     }
   }
-  for (const Beam6* bp = model_.beam6s.awake_begin(); bp != model_.beam6s.awake_end(); ++bp) {
-    const Beam6& b = *bp;
-    const Beam6Ends e = beam6_ends(b, x, q, gf);
-    S[b.i] += e.k;
-    S[b.j] += e.k;
-    K[b.i] += e.kr;
-    K[b.j] += e.kr;
-    F[b.i] -= e.fj;
-    F[b.j] += e.fj;
-    T[b.i] += e.ta;
-    T[b.j] += e.tb;
+  const Beam6* beam6s = model_.beam6s.awake_begin();
+  const std::uint32_t n_beam6s = std::uint32_t(model_.beam6s.awake_end() - beam6s);
+  if (n_beam6s > 0) {
+    Beam6Block bb;
+    for (std::uint32_t e0 = 0; e0 < n_beam6s; e0 += kBeam6Block) {
+      const std::uint32_t n = std::min(kBeam6Block, n_beam6s - e0);
+      for (std::uint32_t m = 0; m < n; ++m) {
+        const Beam6& b = beam6s[e0 + m];
+        const Vec3 d = x[b.j] - x[b.i];
+        const Quat qa = q[b.i] * b.end_i, qb = q[b.j] * b.end_j;
+        bb.dx[m] = d.x(), bb.dy[m] = d.y(), bb.dz[m] = d.z();
+        bb.ax[m] = qa.x(), bb.ay[m] = qa.y(), bb.az[m] = qa.z(), bb.aw[m] = qa.w();
+        bb.bx[m] = qb.x(), bb.by[m] = qb.y(), bb.bz[m] = qb.z(), bb.bw[m] = qb.w();
+        bb.L[m] = b.rest_length, bb.EA[m] = b.EA, bb.EIy[m] = b.EIy, bb.EIz[m] = b.EIz, bb.GJ[m] = b.GJ;
+        bb.pre[m] = b.prestress;
+      }
+      beam6_block(bb, n, gf);
+      for (std::uint32_t m = 0; m < n; ++m) {
+        const Beam6& b = beam6s[e0 + m];
+        Beam6Ends e;
+        if (bb.redo[m] != 0) [[unlikely]] {
+          e = beam6_ends(b, x, q, gf);
+        } else {
+          e.k = bb.k[m], e.kr = bb.kr[m];
+          e.fj = Vec3(bb.fx[m], bb.fy[m], bb.fz[m]);
+          e.ta = Vec3(bb.tax[m], bb.tay[m], bb.taz[m]);
+          e.tb = Vec3(bb.tbx[m], bb.tby[m], bb.tbz[m]);
+        }
+        S[b.i] += e.k;
+        S[b.j] += e.k;
+        K[b.i] += e.kr;
+        K[b.j] += e.kr;
+        F[b.i] -= e.fj;
+        F[b.j] += e.fj;
+        T[b.i] += e.ta;
+        T[b.j] += e.tb;
+      }
+    }
   }
   accumulate_couples(x, F);  // moments on 3-DOF particles (couples.cpp)
   for (Dart d : model_.clamp_darts.raw()) {  // clamped 3-DOF beam ends (Model::set_clamp)
