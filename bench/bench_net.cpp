@@ -31,7 +31,7 @@ namespace {
 struct Variant {
   std::string label;
   Integrator integrator;
-  int iterations;  // vie_iterations (constraint-based solvers)
+  int iterations;  // vie_iterations (constraint-based solvers; 0: the solver chooses)
 };
 
 struct Reached {
@@ -86,8 +86,9 @@ int usage(const char* argv0, int code) {
                "  --sides        grid sides (s x s particles; default 128,500)\n"
                "  --cap          wall-time limit of each run (default 60 s)\n"
                "  --threads      solver threads (default 1)\n"
-               "  --integrators  leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective,\n"
-               "                 projective1 (one local-global iteration per step), mixed, newton\n"
+               "  --integrators  leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective\n"
+               "                 (vie_iterations = 0, the default: the solver chooses), projective1 and\n"
+               "                 projective4 (1 and 4 local-global iterations per step), mixed, newton\n"
                "                 (default: all)\n",
                argv0);
   return code;
@@ -100,12 +101,13 @@ int main(int argc, char** argv) {
   double cap = 60;
   int threads = 1;
   std::vector<Variant> variants;
-  for (Integrator i : kIntegrators) variants.push_back({integrator_name(i), i, 4});
-  variants.push_back({"vie", Integrator::VariationalImplicitEuler, 4});
-  variants.push_back({"projective", Integrator::ProjectiveDynamics, 4});
+  for (Integrator i : kIntegrators) variants.push_back({integrator_name(i), i, 0});
+  variants.push_back({"vie", Integrator::VariationalImplicitEuler, 0});
+  variants.push_back({"projective", Integrator::ProjectiveDynamics, 0});  // the solver chooses (adaptive)
   variants.push_back({"projective1", Integrator::ProjectiveDynamics, 1});
-  variants.push_back({"mixed", Integrator::Mixed, 4});
-  variants.push_back({"newton", Integrator::Newton, 4});
+  variants.push_back({"projective4", Integrator::ProjectiveDynamics, 4});
+  variants.push_back({"mixed", Integrator::Mixed, 0});
+  variants.push_back({"newton", Integrator::Newton, 0});
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];

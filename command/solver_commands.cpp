@@ -59,7 +59,7 @@ void declare_solver(std::vector<Command>& out) {
                     {"mass_factor", Type::Number, "safety on the fictitious masses (>= 1)", {}, {}, true},
                     {"integrator", Type::Word, "", {}, integrators, true},
                     {"mass_mode", Type::Word, "", {}, {"fictitious", "physical"}, true},
-                    {"vie_iterations", Type::Count, "local-global iterations per step", {1, kMaxVieIterations}, {}, true},
+                    {"vie_iterations", Type::Count, "local-global iterations per step (0: the solver chooses)", {0, kMaxVieIterations}, {}, true},
                     {"vie_dt", Type::Number, "the constraint solvers' time step (>= 0; 0: dt)", {}, {}, true},
                     {"mixed_switch", Type::Number, "mixed: the residual ratio to switch at, in (0, 1)", {}, {}, true},
                     {"mixed_implicit", Type::Word, "mixed: the implicit phase", {}, {"vie", "projective"}, true}},

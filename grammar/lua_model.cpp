@@ -127,7 +127,7 @@ void apply_settings(lua_State* L, int idx, Scene& s, const char* fn) {
       Value::of_number(field_number(L, idx, "mass_factor", fn, st.mass_factor)),
       Value::of_word(field_string(L, idx, "integrator", fn, integrator_name(st.integrator))),
       Value::of_word(field_string(L, idx, "mass_mode", fn, mass_mode_name(st.mass_mode))),
-      Value::of_id(std::uint64_t(whole("vie_iterations", st.vie_iterations, 1, kMaxVieIterations))),
+      Value::of_id(std::uint64_t(whole("vie_iterations", st.vie_iterations, 0, kMaxVieIterations))),
       Value::of_number(field_number(L, idx, "vie_dt", fn, st.vie_dt)),
       Value::of_number(field_number(L, idx, "mixed_switch", fn, st.mixed_switch)),
       Value::of_word(field_string(L, idx, "mixed_implicit", fn, integrator_name(st.mixed_implicit)))};

@@ -938,8 +938,8 @@ void Reader::read_solver(const tinyxml2::XMLElement* e, SolverSettings& s) const
       a.bad("mixed_implicit", "is " + quoted(name) + "; expected vie or projective");
     else s.mixed_implicit = *i;
   }
-  // Out of range: 0, which check_settings refuses with the message every entry point gives.
-  s.vie_iterations = int(whole_number_in(a.real("vie_iterations", s.vie_iterations), 1, kMaxVieIterations).value_or(0));
+  // Out of range: -1, which check_settings refuses with the message every entry point gives.
+  s.vie_iterations = int(whole_number_in(a.real("vie_iterations", s.vie_iterations), 0, kMaxVieIterations).value_or(-1));
   s.vie_dt = a.real("vie_dt", s.vie_dt);
   s.mixed_switch = a.real("mixed_switch", s.mixed_switch);
   if (auto error = check_settings(s)) a.bad(error->key.c_str(), error->message);

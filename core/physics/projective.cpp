@@ -332,12 +332,26 @@ void Solver::integrate_projective() {
   for (ParticleId p : integrated) mass_[p] = frozen[p];
   start_implicit_step(dt);
   const std::uint8_t* lock = P.lock.data();
-  for (int it = 0; it < settings.vie_iterations; ++it) {
+  // vie_iterations = 0: one iteration in form-finding; in dynamics until the
+  // last correction is below kAdaptiveTolerance of how far the step moved
+  // (translations; the largest component of each), at most
+  // kAdaptiveIterations (solver.hpp says why).
+  const bool adaptive = settings.vie_iterations == 0, dynamics = settings.mass_mode == MassMode::Physical;
+  const int iterations = !adaptive ? settings.vie_iterations : dynamics ? kAdaptiveIterations : 1;
+  for (int it = 0; it < iterations; ++it) {
     local_step(xs_.data(), qs_.data());
     for (ParticleId p : integrated) vs_[p] = mass_[p] * inv_dt2 * (x0_[p] - xs_[p]) + Fs_[p];
     projective_->solve(model_, vs_.data());  // the global step
-    for (ParticleId p : integrated) xs_[p] += vs_[p].cwiseProduct(free_axes(lock[p]));
+    double correction = 0, moved = 0;
+    for (ParticleId p : integrated) {
+      const Vec3 dx = vs_[p].cwiseProduct(free_axes(lock[p]));
+      xs_[p] += dx;
+      correction = std::max(correction, dx.cwiseAbs().maxCoeff());
+    }
     rotation_global_step(inv_dt2);
+    if (!adaptive || !dynamics) continue;
+    for (ParticleId p : integrated) moved = std::max(moved, (xs_[p] - P.position[p]).cwiseAbs().maxCoeff());
+    if (correction <= kAdaptiveTolerance * moved) break;
   }
   finish_implicit_step(dt);
 }

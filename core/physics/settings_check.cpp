@@ -11,8 +11,9 @@ std::optional<SettingError> check_settings(const SolverSettings& s) {
   if (!(s.geometric_factor >= 0) || !finite(s.geometric_factor))
     return SettingError{"geometric_factor", "must be a finite number >= 0"};
   if (!(s.mass_factor >= 1) || !finite(s.mass_factor)) return SettingError{"mass_factor", "must be a finite number >= 1"};
-  if (s.vie_iterations < 1 || s.vie_iterations > kMaxVieIterations)
-    return SettingError{"vie_iterations", "must be a whole number from 1 to " + std::to_string(kMaxVieIterations)};
+  if (s.vie_iterations < 0 || s.vie_iterations > kMaxVieIterations)
+    return SettingError{"vie_iterations",
+                        "must be a whole number from 0 (the solver chooses) to " + std::to_string(kMaxVieIterations)};
   if (!(s.vie_dt >= 0) || !finite(s.vie_dt)) return SettingError{"vie_dt", "must be a finite number >= 0 (0: dt)"};
   if (!(s.mixed_switch > 0 && s.mixed_switch < 1)) return SettingError{"mixed_switch", "must be in (0, 1)"};
   if (s.mixed_implicit != Integrator::VariationalImplicitEuler && s.mixed_implicit != Integrator::ProjectiveDynamics)

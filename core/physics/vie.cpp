@@ -118,7 +118,8 @@ void Solver::integrate_vie() {
   const Particles& P = model_.particles;
   const std::uint8_t* lock = P.lock.data();
   const double inv_dt2 = 1 / (dt * dt);
-  for (int it = 0; it < settings.vie_iterations; ++it) {
+  const int iterations = settings.vie_iterations > 0 ? settings.vie_iterations : kVieIterations;
+  for (int it = 0; it < iterations; ++it) {
     local_step(xs_.data(), qs_.data());
     for (ParticleId p : P.integrated.raw()) {  // global step, eq. 3.63 with the momentum term
       const double m = mass_[p] * inv_dt2;

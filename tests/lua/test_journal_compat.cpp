@@ -15,6 +15,9 @@
 // keep its rounding error and fold it in after a cancellation (issue 13:
 // masses removed to nothing now leave 0, not their rounding): five z
 // coordinates moved by up to 3.5e-18 m.
+// v1-patches.xml's solver reads vie_iterations="0" since that became the
+// default (issue 18: the solver chooses; the journal never set it, and its
+// leapfrog steps do not read it).
 // The v1-*.xml roots carry the steps and simulated time the journals
 // integrate since the model database keeps them (issue 14).
 #include <doctest/doctest.h>
