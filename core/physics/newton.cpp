@@ -21,15 +21,6 @@ constexpr int kMaxIterations = 1000;
 // (b, a) are one entry, whichever row is larger.
 constexpr int kPairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 0}, {2, 0}, {2, 1}};
 
-// Where entry (r, c) or (c, r), whichever is in the lower triangle, sits
-// in a pattern's values; -1 for a row or column that is not there (-1).
-int lower_entry(const Eigen::SparseMatrix<double>& lower, int r, int c) {
-  if (r < 0 || c < 0) return -1;
-  if (c > r) std::swap(r, c);
-  const int* inner = lower.innerIndexPtr();
-  return int(std::lower_bound(inner + lower.outerIndexPtr()[c], inner + lower.outerIndexPtr()[c + 1], r) - inner);
-}
-
 // K_e of a bar at x; false for a slack cable (no force, no stiffness).
 bool bar_tangent(const Bar& b, const Vec3* x, Mat3& Ke) {
   const Vec3 d = x[b.j] - x[b.i];
@@ -175,66 +166,98 @@ void NewtonSystem::build_pattern(const Model& m) {
   // K's pattern column by column, from each particle's neighbours (bars
   // and length goals): a column (p, a) holds the rows (q, b) >= its own of
   // p and its neighbours. Built directly: from triplets it took 2.8 s of a
-  // 1M-particle solve.
+  // 1M-particle solve. The rows of p and its neighbours are sorted once per
+  // particle; each of p's columns is the part of them at or below its
+  // diagonal. While a column is written, the entries it holds of p's own
+  // block and of p's bars are noted, so that assembling is a scatter
+  // (binary searches per entry took 11 % of the time on the 128 x 128 net,
+  // and finding the slots by search after the pattern a quarter of building
+  // it).
   std::vector<int> degree(capacity_ + 1, 0);
-  auto each_pair = [&](auto&& visit) {
-    for (const Bar* b = m.bars.awake_begin(); b != m.bars.awake_end(); ++b) visit(b->i, b->j);
+  auto each_pair = [&](auto&& visit) {  // bars first, in order (their index), then length goals (-1)
+    int e = 0;
+    for (const Bar* b = m.bars.awake_begin(); b != m.bars.awake_end(); ++b) visit(b->i, b->j, e++);
     for (const Goal& g : m.goals)
-      if (g.kind == Goal::Length) visit(g.i, g.j);
+      if (g.kind == Goal::Length) visit(g.i, g.j, -1);
   };
-  each_pair([&](ParticleId i, ParticleId j) { ++degree[i + 1], ++degree[j + 1]; });
+  each_pair([&](ParticleId i, ParticleId j, int) { ++degree[i + 1], ++degree[j + 1]; });
   for (std::size_t p = 0; p < capacity_; ++p) degree[p + 1] += degree[p];
   std::vector<ParticleId> neighbour(static_cast<std::size_t>(degree[capacity_]));
+  std::vector<int> via_bar(neighbour.size());  // the bar to that neighbour, or -1 (a length goal)
   {
     std::vector<int> fill(degree.begin(), degree.end() - 1);
-    each_pair([&](ParticleId i, ParticleId j) { neighbour[fill[i]++] = j, neighbour[fill[j]++] = i; });
+    each_pair([&](ParticleId i, ParticleId j, int e) {
+      neighbour[fill[i]] = j, via_bar[fill[i]++] = e;
+      neighbour[fill[j]] = i, via_bar[fill[j]++] = e;
+    });
   }
-  std::vector<int> particle_of(rows_);
-  for (ParticleId p = 0; p < capacity_; ++p)
-    for (int a = 0; a < 3; ++a)
-      if (const int r = row_[3 * p + a]; r >= 0) particle_of[r] = int(p);
-  std::vector<int> outer(rows_ + 1, 0), inner, column;
-  inner.reserve(std::size_t(rows_) * 2 + 9 * m.bars.awake);
-  for (int c = 0; c < rows_; ++c) {
-    const ParticleId p = ParticleId(particle_of[c]);
-    column.clear();
+  std::vector<int> near_begin(capacity_ + 1, 0), near;
+  near.reserve(3 * (capacity_ + neighbour.size()));
+  for (ParticleId p = 0; p < capacity_; ++p) {
+    const std::size_t first = near.size();
     auto rows_of = [&](ParticleId q) {
       for (int b = 0; b < 3; ++b)
-        if (const int r = row_[3 * q + b]; r >= c) column.push_back(r);
+        if (const int r = row_[3 * q + b]; r >= 0) near.push_back(r);
     };
     rows_of(p);
     for (int k = degree[p]; k < degree[p + 1]; ++k)
       if (P.active[neighbour[k]]) rows_of(neighbour[k]);
-    std::sort(column.begin(), column.end());
-    column.erase(std::unique(column.begin(), column.end()), column.end());
-    inner.insert(inner.end(), column.begin(), column.end());
-    outer[c + 1] = int(inner.size());
+    std::sort(near.begin() + std::ptrdiff_t(first), near.end());
+    near.erase(std::unique(near.begin() + std::ptrdiff_t(first), near.end()), near.end());
+    near_begin[p + 1] = int(near.size());
   }
+  std::vector<int> particle_of(rows_), axis_of(rows_);
+  for (ParticleId p = 0; p < capacity_; ++p)
+    for (int a = 0; a < 3; ++a)
+      if (const int r = row_[3 * p + a]; r >= 0) particle_of[r] = int(p), axis_of[r] = a;
+  // The index in kPairs of the unordered axis pair {a, b}.
+  constexpr int kPairOf[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+  const Bar* bars = m.bars.awake_begin();
+  own_slot_.assign(6 * capacity_, -1);
+  bar_slot_.assign(9 * m.bars.awake, -1);
+  std::vector<int> where(rows_);  // row -> its entry in the column being written
+  // Written in place, its size counted first: a fresh buffer costs its
+  // first touch of every page, which on the 128 x 128 net took longer than
+  // the arithmetic (copying K into K_ 9.7 ms of a 100 ms solve).
+  auto column_rows = [&](int c) {
+    const ParticleId p = ParticleId(particle_of[c]);
+    const int* rows_begin = near.data() + near_begin[p];
+    const int* rows_end = near.data() + near_begin[p + 1];
+    return std::pair{std::lower_bound(rows_begin, rows_end, c), rows_end};
+  };
   Sparse K(rows_, rows_);
-  K.resizeNonZeros(Eigen::Index(inner.size()));
-  std::copy(outer.begin(), outer.end(), K.outerIndexPtr());
-  std::copy(inner.begin(), inner.end(), K.innerIndexPtr());
-  std::fill(K.valuePtr(), K.valuePtr() + inner.size(), 0.0);
+  int* outer = K.outerIndexPtr();
+  outer[0] = 0;
+  for (int c = 0; c < rows_; ++c) {
+    const auto [first, last] = column_rows(c);
+    outer[c + 1] = outer[c] + int(last - first);
+  }
+  K.resizeNonZeros(outer[rows_]);
+  int* inner = K.innerIndexPtr();
+  for (int c = 0; c < rows_; ++c) {
+    const ParticleId p = ParticleId(particle_of[c]);
+    const int a = axis_of[c];
+    const auto [first, last] = column_rows(c);
+    for (const int* r = first; r != last; ++r) where[*r] = outer[c] + int(r - first);
+    std::copy(first, last, inner + outer[c]);
+    for (int b = 0; b < 3; ++b)
+      if (const int r = row_[3 * p + b]; r >= c) own_slot_[6 * p + kPairOf[a][b]] = where[r];
+    for (int k = degree[p]; k < degree[p + 1]; ++k) {
+      const int e = via_bar[k];
+      if (e < 0) continue;
+      const ParticleId q = neighbour[k];
+      const bool p_first = bars[e].i == p;
+      for (int b = 0; b < 3; ++b)
+        if (const int r = row_[3 * q + b]; r >= c) bar_slot_[9 * std::size_t(e) + (p_first ? 3 * a + b : 3 * b + a)] = where[r];
+    }
+  }
+  // The values are written by assemble().
   const bool same = analysed_ && K.rows() == K_.rows() && K.nonZeros() == K_.nonZeros() &&
                     multigrid == std::array<bool, 3>{axis_[0].multigrid, axis_[1].multigrid, axis_[2].multigrid} &&
                     std::equal(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1, K_.outerIndexPtr()) &&
                     std::equal(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros(), K_.innerIndexPtr());
-  K_ = std::move(K);
+  K_.swap(K);
   revision_ = m.revision;
-  // Where each bar's and each particle's entries sit in K_'s values, so
-  // that assembling is a scatter without searches (binary searches per
-  // entry took 11 % of the time on the 128 x 128 net).
-  auto slot = [&](int r, int c) { return lower_entry(K_, r, c); };
-  own_slot_.assign(6 * capacity_, -1);
-  for (ParticleId p = 0; p < capacity_; ++p)
-    for (int k = 0; k < 6; ++k)
-      own_slot_[6 * p + k] = slot(row_[3 * p + kPairs[k][0]], row_[3 * p + kPairs[k][1]]);
-  bar_slot_.assign(9 * m.bars.awake, -1);
-  for (std::size_t e = 0; e < m.bars.awake; ++e) {
-    const Bar& b = m.bars[e];
-    for (int a = 0; a < 3; ++a)
-      for (int c = 0; c < 3; ++c) bar_slot_[9 * e + 3 * a + c] = slot(row_[3 * b.i + a], row_[3 * b.j + c]);
-  }
   for (Eigen::VectorXd* v : {&b_, &x_, &r_, &z_, &p_, &q_, &t_}) v->resize(rows_);
   if (!same) {
     // Each axis block: in every column of K_ the rows of its own axis come
@@ -242,31 +265,37 @@ void NewtonSystem::build_pattern(const Model& m) {
     for (int a = 0; a < 3; ++a) {
       Axis& s = axis_[a];
       const int o = offset_[a], n = offset_[a + 1] - o;
-      std::vector<int> outer(n + 1, 0), inner;
-      for (int c = o; c < offset_[a + 1]; ++c) {
-        for (Sparse::InnerIterator it(K_, c); it && it.row() < offset_[a + 1]; ++it) inner.push_back(int(it.row()) - o);
-        outer[c - o + 1] = int(inner.size());
-      }
+      // In place, sizes first (see K_ above); the values are factor_axes'.
+      const int* K_outer = K_.outerIndexPtr();
+      const int* K_inner = K_.innerIndexPtr();
+      auto own_axis_end = [&](int c) {  // the end of column c's rows of axis a
+        return int(std::lower_bound(K_inner + K_outer[c], K_inner + K_outer[c + 1], offset_[a + 1]) - K_inner);
+      };
       s.A.resize(n, n);
-      s.A.resizeNonZeros(Eigen::Index(inner.size()));
-      std::copy(outer.begin(), outer.end(), s.A.outerIndexPtr());
-      std::copy(inner.begin(), inner.end(), s.A.innerIndexPtr());
-      std::fill(s.A.valuePtr(), s.A.valuePtr() + inner.size(), 0.0);
+      int* outer = s.A.outerIndexPtr();
+      outer[0] = 0;
+      for (int c = o; c < offset_[a + 1]; ++c) outer[c - o + 1] = outer[c - o] + own_axis_end(c) - K_outer[c];
+      s.A.resizeNonZeros(outer[n]);
+      int* inner = s.A.innerIndexPtr();
+      for (int c = o; c < offset_[a + 1]; ++c)
+        for (int k = K_outer[c], end = own_axis_end(c); k < end; ++k) inner[outer[c - o] + k - K_outer[c]] = K_inner[k] - o;
       if (!s.multigrid) s.ldlt.analyzePattern(s.A);
     }
   }
-  // Where each bar's ii, jj and ij entries sit in the axis blocks' values.
+  // a column of an axis block is the start of K_'s same column, so an
+  // entry's place is K_'s less where each column starts.
   axis_slot_.assign(9 * m.bars.awake, -1);
   for (std::size_t e = 0; e < m.bars.awake; ++e) {
-    const Bar& b = m.bars[e];
+    const Bar& b = bars[e];
     for (int a = 0; a < 3; ++a) {
-      auto slot = [&](int r, int c) {
-        return r < 0 || c < 0 ? -1 : lower_entry(axis_[a].A, r - offset_[a], c - offset_[a]);
-      };
       const int ri = row_[3 * b.i + a], rj = row_[3 * b.j + a];
-      axis_slot_[9 * e + 3 * a] = slot(ri, ri);
-      axis_slot_[9 * e + 3 * a + 1] = slot(rj, rj);
-      axis_slot_[9 * e + 3 * a + 2] = slot(ri, rj);
+      auto in_block = [&](int slot, int column) {
+        return slot < 0 ? -1
+                        : slot - K_.outerIndexPtr()[column] + axis_[a].A.outerIndexPtr()[column - offset_[a]];
+      };
+      if (ri >= 0) axis_slot_[9 * e + 3 * a] = in_block(own_slot_[6 * std::size_t(b.i) + a], ri);
+      if (rj >= 0) axis_slot_[9 * e + 3 * a + 1] = in_block(own_slot_[6 * std::size_t(b.j) + a], rj);
+      if (ri >= 0 && rj >= 0) axis_slot_[9 * e + 3 * a + 2] = in_block(bar_slot_[9 * e + 4 * a], std::min(ri, rj));
     }
   }
   if (same) return;
