@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "io/huge_pages.hpp"
 
 namespace tendril::app {
 
@@ -20,7 +21,8 @@ const char* const kExitStatuses =
     "3 the last m:run{} did not converge (run --strict).";
 
 std::string version_text() {
-  return std::string("tendril ") + TENDRIL_VERSION + " (" + LUA_RELEASE + ", CLI11 " + CLI11_VERSION + ")";
+  return std::string("tendril ") + TENDRIL_VERSION + " (" + LUA_RELEASE + ", CLI11 " + CLI11_VERSION +
+         (started_with_huge_pages() ? std::string(", ") + kHugePagesTunable : std::string()) + ")";
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "io/huge_pages.hpp"
 #include "bench_util.hpp"
 #include "registry.hpp"
 #include "runner.hpp"
@@ -111,6 +112,7 @@ void largest_stable_steps() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  tendril::restart_with_huge_pages(argv);  // as tendril itself runs (io/huge_pages.hpp)
   std::vector<std::string> names;
   for (int k = 1; k < argc; ++k) {
     if (std::strcmp(argv[k], "--case") == 0 && k + 1 < argc) names.push_back(argv[++k]);

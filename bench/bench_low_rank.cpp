@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "io/huge_pages.hpp"
 #include "bench_util.hpp"
 
 using namespace tendril::bench;
@@ -116,6 +117,7 @@ void measure(int side, int reps, Table& table) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  tendril::restart_with_huge_pages(argv);  // as tendril itself runs (io/huge_pages.hpp)
   std::vector<int> sides{128, 316};
   int reps = 20;
   for (int a = 1; a < argc; ++a) {

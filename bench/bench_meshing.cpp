@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "io/huge_pages.hpp"
 #include "bench_util.hpp"
 #include "edge_table.hpp"
 #include "model/model.hpp"
@@ -286,6 +287,7 @@ std::vector<std::string> missing(const std::string& boundary, const std::string&
 }  // namespace
 
 int main(int argc, char** argv) {
+  tendril::restart_with_huge_pages(argv);  // as tendril itself runs (io/huge_pages.hpp)
   std::string gmsh = "gmsh";
   std::filesystem::path dir = std::filesystem::temp_directory_path() / "tendril-bench-meshing";
   for (int i = 1; i < argc; ++i) {

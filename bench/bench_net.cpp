@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "io/huge_pages.hpp"
 #include "bench_util.hpp"
 #include "prestressed_net.hpp"
 #include "model/model.hpp"
@@ -97,6 +98,7 @@ int usage(const char* argv0, int code) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  tendril::restart_with_huge_pages(argv);  // as tendril itself runs (io/huge_pages.hpp)
   std::vector<int> sides{128, 500};
   double cap = 60;
   int threads = 1;

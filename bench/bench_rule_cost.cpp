@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/huge_pages.hpp"
 #include "bench_util.hpp"
 #include "model/model.hpp"
 #include "physics/solver.hpp"
@@ -174,6 +175,7 @@ int usage(const char* argv0, int code) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  tendril::restart_with_huge_pages(argv);  // as tendril itself runs (io/huge_pages.hpp)
   std::vector<std::size_t> sizes{1'000, 10'000, 100'000, 1'000'000};
   std::size_t apps = 200;
   double rebuild_budget = 4.0;

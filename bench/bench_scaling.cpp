@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "io/huge_pages.hpp"
 #include "bench_util.hpp"
 #include "prestressed_net.hpp"
 #include "model/model.hpp"
@@ -103,6 +104,7 @@ int usage(const char* argv0, int code) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  tendril::restart_with_huge_pages(argv);  // as tendril itself runs (io/huge_pages.hpp)
   std::vector<std::size_t> sizes{10000, 40000, 160000, 640000, 1000000};
   double tolerance = 1e-3, cap = 120;
   std::vector<Variant> known{{"newton", Integrator::Newton, 4},

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "io/huge_pages.hpp"
 #include "bench_util.hpp"
 #include "model/model.hpp"
 #include "multires.hpp"
@@ -240,6 +241,7 @@ int usage(const char* argv0, int code) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  tendril::restart_with_huge_pages(argv);  // as tendril itself runs (io/huge_pages.hpp)
   std::vector<std::size_t> sizes{10'000, 100'000, 1'000'000};
   double target_seconds = 1.5;
   std::vector<std::size_t> thread_counts{1, 2};

@@ -31,6 +31,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/huge_pages.hpp"
 #include "bench_util.hpp"
 #include "model/model.hpp"
 #include "physics/solver.hpp"
@@ -179,6 +180,7 @@ int usage(const char* argv0, int code) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  tendril::restart_with_huge_pages(argv);  // as tendril itself runs (io/huge_pages.hpp)
   std::vector<std::size_t> sizes{16384, 100000};  // 128 x 128 (the 16K) and 316 x 316
   int reps = 5;
   std::vector<Change> changes{Change::Cable, Change::Remove, Change::Rest, Change::Particle};
