@@ -93,7 +93,8 @@ int usage(const char* argv0, int code) {
                "usage: %s [--sizes 10K,40K,160K,640K,1M] [--integrators newton,projective1,...] [--tolerance 1e-3]\n"
                "          [--cap SECONDS] [--multigrid-rows ROWS]\n"
                "  --sizes        particles (an s x s net, s = round(sqrt(size)))\n"
-               "  --integrators  newton (default), newton_factors (no multigrid), leapfrog, projective, projective1 (one iteration per step)\n"
+               "  --integrators  newton (default), newton_factors (no multigrid), leapfrog, projective (4 iterations per step,\n"
+               "                 as before vie_iterations = 0 became the default), projective1 (one iteration per step)\n"
                "  --tolerance    residual relative to the nodal load of 1 N (default 1e-3)\n"
                "  --cap          wall-time limit of each run (default 120 s)\n"
                "  --multigrid-rows  newton: axis blocks this large or larger take the multigrid cycle (default 4000)\n",
