@@ -167,16 +167,22 @@ RowsD smoothed_prolongator(const RowsD& A, const Eigen::VectorXd& diagonal, cons
   return P.matrix();
 }
 
+// One Gauss-Seidel sweep on rows sorted by column, each row's diagonal at
+// diagonal_at[i]: the entries left of it, then those right of it, in the
+// row's order. From x = 0 (`from_zero`, a forward sweep) the right ones
+// multiply zeros and are left out, which changes no sum.
 template <class Matrix, class Vector>
-void gauss_seidel(const Matrix& A, const Vector& inverse_diagonal, const Vector& b, Vector& x, bool forward) {
+void gauss_seidel(const Matrix& A, const std::vector<int>& diagonal_at, const Vector& inverse_diagonal,
+                  const Vector& b, Vector& x, bool forward, bool from_zero = false) {
   const int n = int(A.rows());
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
   const auto* value = A.valuePtr();
   auto relax = [&](int i) {
     auto s = b[i];
-    for (int k = outer[i]; k < outer[i + 1]; ++k)
-      if (inner[k] != i) s -= value[k] * x[inner[k]];
+    for (int k = outer[i], d = diagonal_at[std::size_t(i)]; k < d; ++k) s -= value[k] * x[inner[k]];
+    if (!from_zero)
+      for (int k = diagonal_at[std::size_t(i)] + 1; k < outer[i + 1]; ++k) s -= value[k] * x[inner[k]];
     x[i] = s * inverse_diagonal[i];
   };
   if (forward)
@@ -240,6 +246,12 @@ bool AggregationMultigrid::setup(const Lower& lower) {
     const RowsD R = P.transpose();
     const RowsD AP = product(A, P);
     L.A = A.cast<float>(), L.P = P.cast<float>(), L.R = R.cast<float>();
+    L.diagonal_at.resize(std::size_t(n));
+    for (int i = 0; i < n; ++i) {  // rows sorted by column, the diagonal in each (positive, above)
+      const int* first = L.A.innerIndexPtr() + L.A.outerIndexPtr()[i];
+      const int* last = L.A.innerIndexPtr() + L.A.outerIndexPtr()[i + 1];
+      L.diagonal_at[std::size_t(i)] = int(std::lower_bound(first, last, i) - L.A.innerIndexPtr());
+    }
     A = product(R, AP);
     levels_.push_back(std::move(L));
   }
@@ -254,13 +266,13 @@ void AggregationMultigrid::cycle(std::size_t l) const {
     return;
   }
   L.x.setZero();
-  gauss_seidel(L.A, L.inverse_diagonal, L.b, L.x, true);
+  gauss_seidel(L.A, L.diagonal_at, L.inverse_diagonal, L.b, L.x, true, true);
   L.r.noalias() = L.b - L.A * L.x;
   const Level& C = levels_[l + 1];
   C.b.noalias() = L.R * L.r;
   cycle(l + 1);
   L.x.noalias() += L.P * C.x;
-  gauss_seidel(L.A, L.inverse_diagonal, L.b, L.x, false);
+  gauss_seidel(L.A, L.diagonal_at, L.inverse_diagonal, L.b, L.x, false);
 }
 
 void AggregationMultigrid::apply(const Eigen::Ref<const Eigen::VectorXd>& in, Eigen::Ref<Eigen::VectorXd> out) const {

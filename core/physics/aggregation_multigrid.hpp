@@ -41,6 +41,7 @@ class AggregationMultigrid {
   struct Level {
     Rows A;                    // the whole symmetric matrix
     Eigen::VectorXf inverse_diagonal;
+    std::vector<int> diagonal_at;  // where each row's diagonal entry sits in A's values
     Rows P, R;                 // to this level from the next coarser one, and back (R = P^T)
     mutable Eigen::VectorXf b, x, r;
   };
