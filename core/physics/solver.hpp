@@ -109,8 +109,9 @@ struct SolverSettings {
   // the 128 x 128 net: 157 global solves with one, 336 with four), and in
   // dynamics (physical masses) as many as bring the last correction below
   // kAdaptiveTolerance of the step's displacement, at most
-  // kAdaptiveIterations. A number fixes the count for both. Fictitious masses always follow eq. 3.4 at dt, so a vie_dt
-  // above dt weakens the momentum term M / vie_dt^2 of eq. 3.57. 0 means dt
+  // kAdaptiveIterations. A number fixes the count for both.
+  // Fictitious masses always follow eq. 3.4 at dt, so a vie_dt above dt
+  // weakens the momentum term M / vie_dt^2 of eq. 3.57. vie_dt = 0 means dt
   // with physical masses (true dynamics) and 100 dt with fictitious ones
   // (form-finding: the momentum term 1e-4 of its explicit weight, the
   // fastest measured, see bench_constraint_solvers).
