@@ -40,14 +40,105 @@
 // 1e-10 times its longest side squared) has no plane and no normal: it
 // exerts no force and adds only its elastic stiffness.
 #include <algorithm>
+#include <vector>
 
+#include "physics/simd_clones.hpp"
 #include "physics/solver.hpp"
 
 namespace tendril {
 
 namespace {
 constexpr double kDegenerate = 1e-10;
+
+// Triangles are evaluated in blocks, as bars and hinges are (forces.cpp):
+// their sides gathered, one vectorised loop without branches for the
+// frame, the stresses, the three corner pulls and the stiffnesses, then the
+// scatter in the model's order (the G-strings, the pulls and their normals,
+// the stiffnesses), so every sum is added as one triangle at a time adds
+// it. The loop writes out Eigen's cross, dot and norm in their order.
+constexpr std::uint32_t kCstBlock = 64;
+
+struct CstBlock {
+  // in: sides i -> j (a), i -> k (b), j -> k (side3); the membrane
+  alignas(64) double ax[kCstBlock], ay[kCstBlock], az[kCstBlock];
+  alignas(64) double bx[kCstBlock], by[kCstBlock], bz[kCstBlock];
+  alignas(64) double cx[kCstBlock], cy[kCstBlock], cz[kCstBlock];
+  alignas(64) double sigma_warp[kCstBlock], sigma_weft[kCstBlock];
+  alignas(64) double dxx[kCstBlock], dxy[kCstBlock], dyx[kCstBlock], dyy[kCstBlock], G[kCstBlock];
+  alignas(64) double l1[kCstBlock], h[kCstBlock], c[kCstBlock];
+  alignas(64) double analysis[kCstBlock];  // 1 or 0 (flags as doubles: bytes would keep SSE2 scalar)
+  // out: the pulls on i, j, k, the normal a x b, the stiffnesses with and
+  // without a plane (elastic), whether the triangle has a plane
+  alignas(64) double fix[kCstBlock], fiy[kCstBlock], fiz[kCstBlock];
+  alignas(64) double fjx[kCstBlock], fjy[kCstBlock], fjz[kCstBlock];
+  alignas(64) double fkx[kCstBlock], fky[kCstBlock], fkz[kCstBlock];
+  alignas(64) double nx[kCstBlock], ny[kCstBlock], nz[kCstBlock];
+  alignas(64) double si[kCstBlock], sj[kCstBlock], sk[kCstBlock];
+  alignas(64) double ei[kCstBlock], ej[kCstBlock], ek[kCstBlock];
+  alignas(64) double flat[kCstBlock];
+};
+
+TENDRIL_SIMD_CLONES void cst_block(CstBlock& t, std::uint32_t n, double gf) {
+#pragma omp simd
+  for (std::uint32_t m = 0; m < n; ++m) {
+    const bool analysis = t.analysis[m] != 0;
+    // Elastic stiffness (analysis): the diagonal of A B^T D B bounded over
+    // directions, on the reference shape, eq. 3.35's EA / L for a membrane.
+    const double dxx = t.dxx[m], dxy = t.dxy[m], dyx = t.dyx[m], dyy = t.dyy[m], G = t.G[m];
+    const double r_l1 = t.l1[m], r_h = t.h[m], r_c = t.c[m];
+    const double adxy = std::abs(dxy), adyx = std::abs(dyx);
+    const double d = (dxx < dyy ? dyy : dxx) + (adxy < adyx ? adyx : adxy) + G;
+    const double ref_twice_area = r_l1 * r_h;
+    const double e0 = analysis ? d * ((r_c - r_l1) * (r_c - r_l1) + r_h * r_h) / ref_twice_area : 0.0;
+    const double e1 = analysis ? d * (r_c * r_c + r_h * r_h) / ref_twice_area : 0.0;
+    const double e2 = analysis ? d * r_l1 * r_l1 / ref_twice_area : 0.0;
+    t.ei[m] = e0, t.ej[m] = e1, t.ek[m] = e2;
+    const double ax = t.ax[m], ay = t.ay[m], az = t.az[m], bx = t.bx[m], by = t.by[m], bz = t.bz[m];
+    const double cx = t.cx[m], cy = t.cy[m], cz = t.cz[m];
+    const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;  // a x b
+    t.nx[m] = nx, t.ny[m] = ny, t.nz[m] = nz;
+    const double twice_area = std::sqrt(nx * nx + ny * ny + nz * nz);
+    const double aa = ax * ax + ay * ay + az * az, bb = bx * bx + by * by + bz * bz, cc = cx * cx + cy * cy + cz * cz;
+    double longest = aa;  // std::max({aa, bb, cc}): the first of the largest
+    longest = longest < bb ? bb : longest;
+    longest = longest < cc ? cc : longest;
+    t.flat[m] = !(twice_area > kDegenerate * longest) ? 1.0 : 0.0;
+    const double l1 = std::sqrt(aa);
+    const double e1x = ax / l1, e1y = ay / l1, e1z = az / l1;
+    const double e3x = nx / twice_area, e3y = ny / twice_area, e3z = nz / twice_area;
+    const double e2x = e3y * e1z - e3z * e1y, e2y = e3z * e1x - e3x * e1z, e2z = e3x * e1y - e3y * e1x;  // e3 x e1
+    double sx = t.sigma_warp[m], sy = t.sigma_weft[m], tau = 0;
+    {  // analysis: eq. 3.37-3.38
+      const double h = twice_area / l1, c = bx * e1x + by * e1y + bz * e1z;
+      const double ex = l1 / r_l1 - 1, ey = h / r_h - 1;
+      const double gamma = (c - r_c * (1 + ex)) / r_h;
+      const double ax_sx = sx + (dxx * ex + dxy * ey), ax_sy = sy + (dyx * ex + dyy * ey);
+      sx = analysis ? ax_sx : sx;
+      sy = analysis ? ax_sy : sy;
+      tau = analysis ? G * gamma : 0.0;
+    }
+    // 1/2 sigma m for the side opposite a corner: out = side x e3.
+    auto pull = [&](double px, double py, double pz, double& fx, double& fy, double& fz) {
+      const double ox = py * e3z - pz * e3y, oy = pz * e3x - px * e3z, oz = px * e3y - py * e3x;
+      const double u = ox * e1x + oy * e1y + oz * e1z, v = ox * e2x + oy * e2y + oz * e2z;
+      const double A = sx * u + tau * v, B = tau * u + sy * v;
+      fx = 0.5 * (A * e1x + B * e2x);
+      fy = 0.5 * (A * e1y + B * e2y);
+      fz = 0.5 * (A * e1z + B * e2z);
+    };
+    pull(cx, cy, cz, t.fix[m], t.fiy[m], t.fiz[m]);
+    pull(-bx, -by, -bz, t.fjx[m], t.fjy[m], t.fjz[m]);
+    pull(ax, ay, az, t.fkx[m], t.fky[m], t.fkz[m]);
+    // Eq. 3.40: the geometric stiffness of a corner under tension grows with
+    // (opposite side)^2 / (twice the area), i.e. base over height; both
+    // stresses count, so neither direction is left without mass.
+    const double g = gf * ((sx < 0.0 ? 0.0 : sx) + (sy < 0.0 ? 0.0 : sy)) / twice_area;
+    t.si[m] = e0 + g * cc;
+    t.sj[m] = e1 + g * bb;
+    t.sk[m] = e2 + g * aa;
+  }
 }
+}  // namespace
 
 void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
   const double gf = settings.geometric_factor;
@@ -57,101 +148,99 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
     cst_normal_.assign(capacity, Vec3::Zero());
     cst_smooth_.assign(capacity, Vec3::Zero());
   }
+  // The corners of the triangles projected below, once each, and how many of
+  // those triangles each has (0, 1, or 2 for more): scratch of this thread,
+  // empty and zero between calls (whatever the solver), grown never per step.
+  thread_local std::vector<ParticleId> corners;
+  thread_local std::vector<std::uint8_t> seen;
+  for (const ParticleId p : corners) seen[p] = 0;  // left by a call cut short
+  corners.clear();
+  if (seen.size() < capacity) seen.resize(capacity, 0);
   bool gathered = false;
-  for (const Cst* tp = model_.csts.awake_begin(); tp != model_.csts.awake_end(); ++tp) {  // awake only
-    const Cst& t = *tp;
-    const Membrane& m = t.membrane;
-    const bool analysis = m.mode == Membrane::Analysis;
-    // Elastic stiffness (analysis): the diagonal of A B^T D B bounded over
-    // directions, on the reference shape, eq. 3.35's EA / L for a membrane.
-    double elastic[3] = {0, 0, 0};
-    if (analysis) {
-      const double d = std::max(m.dxx, m.dyy) + std::max(std::abs(m.dxy), std::abs(m.dyx)) + m.G;
-      const CstReference& r = t.ref;
-      const double twice_area = r.l1 * r.h;
-      elastic[0] = d * ((r.c - r.l1) * (r.c - r.l1) + r.h * r.h) / twice_area;
-      elastic[1] = d * (r.c * r.c + r.h * r.h) / twice_area;
-      elastic[2] = d * r.l1 * r.l1 / twice_area;
+  const Cst* csts = model_.csts.awake_begin();  // awake only
+  const std::uint32_t n_csts = std::uint32_t(model_.csts.awake_end() - csts);
+  CstBlock tb;
+  for (std::uint32_t e0 = 0; e0 < n_csts; e0 += kCstBlock) {
+    const std::uint32_t n = std::min(kCstBlock, n_csts - e0);
+    for (std::uint32_t m = 0; m < n; ++m) {
+      const Cst& t = csts[e0 + m];
+      const Membrane& mb = t.membrane;
+      const Vec3 a = x[t.j] - x[t.i], b = x[t.k] - x[t.i], side3 = x[t.k] - x[t.j];
+      tb.ax[m] = a.x(), tb.ay[m] = a.y(), tb.az[m] = a.z();
+      tb.bx[m] = b.x(), tb.by[m] = b.y(), tb.bz[m] = b.z();
+      tb.cx[m] = side3.x(), tb.cy[m] = side3.y(), tb.cz[m] = side3.z();
+      tb.sigma_warp[m] = mb.sigma_warp, tb.sigma_weft[m] = mb.sigma_weft;
+      tb.dxx[m] = mb.dxx, tb.dxy[m] = mb.dxy, tb.dyx[m] = mb.dyx, tb.dyy[m] = mb.dyy, tb.G[m] = mb.G;
+      tb.l1[m] = t.ref.l1, tb.h[m] = t.ref.h, tb.c[m] = t.ref.c;
+      tb.analysis[m] = mb.mode == Membrane::Analysis ? 1.0 : 0.0;
     }
-    const Vec3 a = x[t.j] - x[t.i], b = x[t.k] - x[t.i], side3 = x[t.k] - x[t.j];
-    const std::uint8_t along_normal = analysis ? 0 : t.interior;
-    if (along_normal) {  // the G-strings: side 1 (i -> j) warp, side 2 (j -> k) weft
-      auto g_string = [&](ParticleId u, int cu, ParticleId v, int cv, const Vec3& uv, double q) {
-        if (along_normal >> cu & 1) {
-          cst_smooth_[u] += q * uv;
-          S[u] += q;
+    cst_block(tb, n, gf);
+    for (std::uint32_t m = 0; m < n; ++m) {
+      const Cst& t = csts[e0 + m];
+      const Membrane& mb = t.membrane;
+      const std::uint8_t along_normal = mb.mode == Membrane::Analysis ? 0 : t.interior;
+      if (mb.mode == Membrane::FormFinding && t.interior)  // its corners are projected below
+        for (const ParticleId p : {t.i, t.j, t.k}) {
+          if (seen[p] == 0) corners.push_back(p);
+          seen[p] = seen[p] == 0 ? 1 : 2;
         }
-        if (along_normal >> cv & 1) {
-          cst_smooth_[v] -= q * uv;
-          S[v] += q;
-        }
-      };
-      const double q = 0.5 * (m.sigma_warp + m.sigma_weft);
-      g_string(t.i, 0, t.j, 1, a, q);
-      g_string(t.j, 1, t.k, 2, side3, q);
-      gathered = true;
-    }
-    const Vec3 n = a.cross(b);
-    const double twice_area = n.norm();
-    const double longest = std::max({a.squaredNorm(), b.squaredNorm(), side3.squaredNorm()});
-    if (!(twice_area > kDegenerate * longest)) {
-      S[t.i] += elastic[0];
-      S[t.j] += elastic[1];
-      S[t.k] += elastic[2];
-      continue;
-    }
-    const double l1 = a.norm();
-    const Vec3 e1 = a / l1, e3 = n / twice_area, e2 = e3.cross(e1);
-    double sx = m.sigma_warp, sy = m.sigma_weft, tau = 0;
-    if (analysis) {
-      const CstReference& r = t.ref;
-      const double h = twice_area / l1, c = b.dot(e1);
-      const double ex = l1 / r.l1 - 1, ey = h / r.h - 1;
-      const double gamma = (c - r.c * (1 + ex)) / r.h;
-      sx += m.dxx * ex + m.dxy * ey;  // eq. 3.38
-      sy += m.dyx * ex + m.dyy * ey;
-      tau = m.G * gamma;
-    }
-    auto pull = [&](const Vec3& side) {  // 1/2 sigma m for the side opposite a corner
-      const Vec3 out = side.cross(e3);
-      const double u = out.dot(e1), v = out.dot(e2);
-      return 0.5 * ((sx * u + tau * v) * e1 + (tau * u + sy * v) * e2);
-    };
-    const Vec3 fi = pull(side3), fj = pull(-b), fk = pull(a);
-    auto add = [&](ParticleId p, int corner, const Vec3& f) {
-      if (!(along_normal >> corner & 1)) {
-        F[p] += f;
-        return;
+      if (along_normal) {  // the G-strings: side 1 (i -> j) warp, side 2 (j -> k) weft
+        auto g_string = [&](ParticleId u, int cu, ParticleId v, int cv, const Vec3& uv, double q) TENDRIL_INLINE {
+          if (along_normal >> cu & 1) {
+            cst_smooth_[u] += q * uv;
+            S[u] += q;
+          }
+          if (along_normal >> cv & 1) {
+            cst_smooth_[v] -= q * uv;
+            S[v] += q;
+          }
+        };
+        const double q = 0.5 * (mb.sigma_warp + mb.sigma_weft);
+        g_string(t.i, 0, t.j, 1, Vec3(tb.ax[m], tb.ay[m], tb.az[m]), q);
+        g_string(t.j, 1, t.k, 2, Vec3(tb.cx[m], tb.cy[m], tb.cz[m]), q);
+        gathered = true;
       }
-      cst_pull_[p] += f;  // projected below, once all its triangles are in
-      cst_normal_[p] += cst_normal_[p].dot(n) < 0 ? Vec3(-n) : n;
-      gathered = true;
-    };
-    add(t.i, 0, fi);
-    add(t.j, 1, fj);
-    add(t.k, 2, fk);
-    // Eq. 3.40: the geometric stiffness of a corner under tension grows with
-    // (opposite side)^2 / (twice the area), i.e. base over height; both
-    // stresses count, so neither direction is left without mass.
-    const double g = gf * (std::max(sx, 0.0) + std::max(sy, 0.0)) / twice_area;
-    S[t.i] += elastic[0] + g * side3.squaredNorm();
-    S[t.j] += elastic[1] + g * b.squaredNorm();
-    S[t.k] += elastic[2] + g * a.squaredNorm();
+      if (tb.flat[m] != 0) {  // no plane: no force, the elastic stiffness only
+        S[t.i] += tb.ei[m];
+        S[t.j] += tb.ej[m];
+        S[t.k] += tb.ek[m];
+        continue;
+      }
+      const Vec3 nrm(tb.nx[m], tb.ny[m], tb.nz[m]);
+      auto add = [&](ParticleId p, int corner, const Vec3& f) TENDRIL_INLINE {
+        if (!(along_normal >> corner & 1)) {
+          F[p] += f;
+          return;
+        }
+        cst_pull_[p] += f;  // projected below, once all its triangles are in
+        cst_normal_[p] += cst_normal_[p].dot(nrm) < 0 ? Vec3(-nrm) : nrm;
+        gathered = true;
+      };
+      add(t.i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]));
+      add(t.j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]));
+      add(t.k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]));
+      S[t.i] += tb.si[m];
+      S[t.j] += tb.sj[m];
+      S[t.k] += tb.sk[m];
+    }
   }
   if (!gathered) return;
-  for (const Cst* tp = model_.csts.awake_begin(); tp != model_.csts.awake_end(); ++tp) {
-    const Cst& t = *tp;
-    if (t.membrane.mode != Membrane::FormFinding || !t.interior) continue;
-    for (const ParticleId p : {t.i, t.j, t.k}) {
-      const Vec3 normal = cst_normal_[p], smooth = cst_smooth_[p];
-      const double nn = normal.squaredNorm();
-      F[p] += smooth;
-      if (nn > 0) F[p] += ((cst_pull_[p] - smooth).dot(normal) / nn) * normal;
-      cst_pull_[p].setZero();
-      cst_normal_[p].setZero();
-      cst_smooth_[p].setZero();
-    }
+  // The corners of every projected triangle, once each: its G-strings, and
+  // the part of its pull along its normal. A corner in more than one such
+  // triangle then adds +0 (in the model's order of triangles it was visited
+  // once per triangle, the later visits adding zeros: -0 + 0 is +0).
+  for (const ParticleId p : corners) {
+    const Vec3 normal = cst_normal_[p], smooth = cst_smooth_[p];
+    const double nn = normal.squaredNorm();
+    F[p] += smooth;
+    if (nn > 0) F[p] += ((cst_pull_[p] - smooth).dot(normal) / nn) * normal;
+    if (seen[p] > 1) F[p] += Vec3::Zero();
+    cst_pull_[p].setZero();
+    cst_normal_[p].setZero();
+    cst_smooth_[p].setZero();
+    seen[p] = 0;
   }
+  corners.clear();
 }
 
 }  // namespace tendril
