@@ -78,14 +78,18 @@ struct CstBlock {
   alignas(64) double flat[kCstBlock];
 };
 
+// kAnalysis false: every triangle of the block is in form-finding, and the
+// analysis fields are neither gathered nor read.
+template <bool kAnalysis>
 TENDRIL_SIMD_CLONES void cst_block(CstBlock& t, std::uint32_t n, double gf) {
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
-    const bool analysis = t.analysis[m] != 0;
+    const bool analysis = kAnalysis && t.analysis[m] != 0;
     // Elastic stiffness (analysis): the diagonal of A B^T D B bounded over
     // directions, on the reference shape, eq. 3.35's EA / L for a membrane.
-    const double dxx = t.dxx[m], dxy = t.dxy[m], dyx = t.dyx[m], dyy = t.dyy[m], G = t.G[m];
-    const double r_l1 = t.l1[m], r_h = t.h[m], r_c = t.c[m];
+    const double dxx = kAnalysis ? t.dxx[m] : 0.0, dxy = kAnalysis ? t.dxy[m] : 0.0, dyx = kAnalysis ? t.dyx[m] : 0.0;
+    const double dyy = kAnalysis ? t.dyy[m] : 0.0, G = kAnalysis ? t.G[m] : 0.0;
+    const double r_l1 = kAnalysis ? t.l1[m] : 1.0, r_h = kAnalysis ? t.h[m] : 1.0, r_c = kAnalysis ? t.c[m] : 0.0;
     const double adxy = std::abs(dxy), adyx = std::abs(dyx);
     const double d = (dxx < dyy ? dyy : dxx) + (adxy < adyx ? adyx : adxy) + G;
     const double ref_twice_area = r_l1 * r_h;
@@ -162,6 +166,7 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
   CstBlock tb;
   for (std::uint32_t e0 = 0; e0 < n_csts; e0 += kCstBlock) {
     const std::uint32_t n = std::min(kCstBlock, n_csts - e0);
+    bool analysis = false;
     for (std::uint32_t m = 0; m < n; ++m) {
       const Cst& t = csts[e0 + m];
       const Membrane& mb = t.membrane;
@@ -170,11 +175,20 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
       tb.bx[m] = b.x(), tb.by[m] = b.y(), tb.bz[m] = b.z();
       tb.cx[m] = side3.x(), tb.cy[m] = side3.y(), tb.cz[m] = side3.z();
       tb.sigma_warp[m] = mb.sigma_warp, tb.sigma_weft[m] = mb.sigma_weft;
-      tb.dxx[m] = mb.dxx, tb.dxy[m] = mb.dxy, tb.dyx[m] = mb.dyx, tb.dyy[m] = mb.dyy, tb.G[m] = mb.G;
-      tb.l1[m] = t.ref.l1, tb.h[m] = t.ref.h, tb.c[m] = t.ref.c;
-      tb.analysis[m] = mb.mode == Membrane::Analysis ? 1.0 : 0.0;
+      analysis |= mb.mode == Membrane::Analysis;
     }
-    cst_block(tb, n, gf);
+    if (analysis) {
+      for (std::uint32_t m = 0; m < n; ++m) {
+        const Cst& t = csts[e0 + m];
+        const Membrane& mb = t.membrane;
+        tb.dxx[m] = mb.dxx, tb.dxy[m] = mb.dxy, tb.dyx[m] = mb.dyx, tb.dyy[m] = mb.dyy, tb.G[m] = mb.G;
+        tb.l1[m] = t.ref.l1, tb.h[m] = t.ref.h, tb.c[m] = t.ref.c;
+        tb.analysis[m] = mb.mode == Membrane::Analysis ? 1.0 : 0.0;
+      }
+      cst_block<true>(tb, n, gf);
+    } else {
+      cst_block<false>(tb, n, gf);
+    }
     for (std::uint32_t m = 0; m < n; ++m) {
       const Cst& t = csts[e0 + m];
       const Membrane& mb = t.membrane;

@@ -17,6 +17,7 @@
 #include <cmath>
 
 #include "model/frames.hpp"
+#include "physics/frame_drift.hpp"
 #include "physics/free_axes.hpp"
 #include "physics/numerical_errors.hpp"
 #include "physics/solver.hpp"
@@ -112,8 +113,7 @@ void Solver::kick_drift(bool whole_kick) {
     return;
   }
   for (ParticleId p : integrated) x[p] += dt * v[p];  // eq. 3.12
-  for (ParticleId p : rotating)
-    if (active[p]) R[p] = turned(dt * w[p], R[p]);  // eq. 3.19
+  drift_frames(rotating.data(), std::uint32_t(rotating.size()), active, dt, w, R);  // eq. 3.19, turned in blocks
   record_energy(ke, momentum2);
   half_step_ = true;
 }
