@@ -342,15 +342,14 @@ void Solver::integrate_projective() {
     local_step(xs_.data(), qs_.data());
     for (ParticleId p : integrated) vs_[p] = mass_[p] * inv_dt2 * (x0_[p] - xs_[p]) + Fs_[p];
     projective_->solve(model_, vs_.data());  // the global step
+    for (ParticleId p : integrated) xs_[p] += vs_[p].cwiseProduct(free_axes(lock[p]));
+    rotation_global_step(inv_dt2);
+    if (!adaptive || !dynamics) continue;  // the two passes below only where the count adapts
     double correction = 0, moved = 0;
     for (ParticleId p : integrated) {
-      const Vec3 dx = vs_[p].cwiseProduct(free_axes(lock[p]));
-      xs_[p] += dx;
-      correction = std::max(correction, dx.cwiseAbs().maxCoeff());
+      correction = std::max(correction, vs_[p].cwiseProduct(free_axes(lock[p])).cwiseAbs().maxCoeff());
+      moved = std::max(moved, (xs_[p] - P.position[p]).cwiseAbs().maxCoeff());
     }
-    rotation_global_step(inv_dt2);
-    if (!adaptive || !dynamics) continue;
-    for (ParticleId p : integrated) moved = std::max(moved, (xs_[p] - P.position[p]).cwiseAbs().maxCoeff());
     if (correction <= kAdaptiveTolerance * moved) break;
   }
   finish_implicit_step(dt);
