@@ -21,6 +21,11 @@
 
 namespace tendril {
 
+// A particle's force (x, y, z) and stiffness as the bar step sums them: one
+// vector of four, so that a bar adds into an end with one load, addition
+// and store (two with SSE2), each lane in the order the scalar sums took.
+using ForceSum = double __attribute__((vector_size(32)));
+
 struct BarChunks {
   struct Chunk {
     std::uint32_t particles_begin = 0, particles_end = 0;         // into `particles`

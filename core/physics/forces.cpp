@@ -5,6 +5,7 @@
 // Bars run chunk by chunk on the lean buffers of bar_chunks.hpp, on every
 // thread; the other elements follow on one thread, in the model's order.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "physics/element_forces.hpp"
@@ -32,12 +33,13 @@ namespace {
 // stiffness, then the forces are scattered. Per bar the arithmetic is
 // exactly that of one bar at a time: T / L is divided once and, with the
 // default geometric factor 1, g T / L is that same quotient (1 * T is T); a
-// bar of no positive length (coincident or non-finite ends) adds no force.
+// bar of no positive length (coincident or non-finite ends) gets a zero
+// force, which adds nothing (scatter_bars).
 constexpr std::uint32_t kBarBlock = 64;
 
 struct BarBlock {
   alignas(64) double dx[kBarBlock], dy[kBarBlock], dz[kBarBlock];
-  alignas(64) double L[kBarBlock], fx[kBarBlock], fy[kBarBlock], fz[kBarBlock], s[kBarBlock];
+  alignas(64) double fx[kBarBlock], fy[kBarBlock], fz[kBarBlock], s[kBarBlock];
 };
 
 // Eq. 3.32 (no tension in a slack cable), eq. 3.33's T / L and eq. 3.35,
@@ -53,11 +55,10 @@ TENDRIL_SIMD_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* _
     const double T = cable[m] && T0 < 0 ? 0.0 : T0;
     const double c = T / L;
     const double g = kUnitFactor ? c : gf * T / L;
-    b.L[m] = L;
     b.s[m] = k[m] + (L > 0 && T > 0 ? g : 0.0);
-    b.fx[m] = c * dx;
-    b.fy[m] = c * dy;
-    b.fz[m] = c * dz;
+    b.fx[m] = L > 0 ? c * dx : 0.0;
+    b.fy[m] = L > 0 ? c * dy : 0.0;
+    b.fz[m] = L > 0 ? c * dz : 0.0;
   }
 }
 
@@ -196,11 +197,62 @@ TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, std::uint32_t n, double gf) 
   }
 }
 
+// A chunk's bars into its particles' sums (indexed from the chunk's first
+// id): an interior bar into both ends, a crossing one into i and, when
+// `slots` is set, its slot. With f = 0 for a bar of no length the sums are
+// those of skipping its force: no component of a sum is -0 (the load is
+// added to a +0 weight, and only -0 + -0 gives -0). S - (-s) is S + s
+// exactly, so the stiffness rides in the fourth lane of j's subtraction.
+TENDRIL_SIMD_CLONES void scatter_bars(const BarBlock& b, std::uint32_t n, std::uint32_t interior,
+                                      const ParticleId* __restrict bi, const ParticleId* __restrict bj, ParticleId base,
+                                      ForceSum* __restrict sums, Vec3* slot_f, double* slot_s) {
+  const ForceSum flip = {1.0, 1.0, 1.0, -1.0};
+  for (std::uint32_t m = 0; m < interior; ++m) {
+    const ForceSum r = {b.fx[m], b.fy[m], b.fz[m], b.s[m]};
+    sums[bi[m] - base] += r;
+    sums[bj[m] - base] -= r * flip;
+  }
+  for (std::uint32_t m = interior; m < n; ++m) {  // j is another chunk's: its share waits in the slot
+    const ForceSum r = {b.fx[m], b.fy[m], b.fz[m], b.s[m]};
+    sums[bi[m] - base] += r;
+    if (slot_f) {
+      slot_f[m - interior] = Vec3(b.fx[m], b.fy[m], b.fz[m]);
+      slot_s[m - interior] = b.s[m];
+    }
+  }
+}
+
+// Each thread's sums of the chunk it evaluated last, named by the pass and
+// the chunk: a chunk's late part on the same thread right after its body
+// finds them; one deferred to the pass's end (or run on another thread)
+// evaluates the chunk's bars again, the same numbers, its slots untouched.
+struct ChunkSumsScratch {
+  std::uint64_t pass = 0;
+  std::uint32_t chunk = 0;
+  // alignas in a struct: the allocator ignores a vector type's own
+  // alignment, and the sums are stored with aligned 32-byte moves.
+  struct alignas(32) Slot {
+    ForceSum sum;
+  };
+  std::vector<Slot> sums;
+  ForceSum* data() { return &sums.data()->sum; }
+};
+thread_local ChunkSumsScratch chunk_sums_scratch;
+std::atomic<std::uint64_t> chunk_passes{0};
+
 }  // namespace
 
-void Solver::chunk_bar_forces(const BarChunks::Chunk& c, const Vec3* x, Vec3* F, double* S) const {
-  const Particles& P = model_.particles;
+std::uint64_t Solver::new_chunk_pass() { return ++chunk_passes; }
+
+ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const Vec3* x, std::uint64_t pass, bool fill_slots) const {
   const BarChunks& B = bar_chunks_;
+  const BarChunks::Chunk& c = B.chunks[chunk];
+  ChunkSumsScratch& scratch = chunk_sums_scratch;
+  const std::size_t chunk_size = std::size_t(1) << B.shift;
+  if (scratch.sums.size() < chunk_size) scratch.sums.resize(chunk_size);
+  ForceSum* sums = scratch.data();
+  const ParticleId base = ParticleId(chunk) << B.shift;
+  const Particles& P = model_.particles;
   const Vec3 g = model_.gravity;
   const Vec3* load = P.load.data();
   const double *point_mass = P.point_mass.data(), *lumped_mass = P.lumped_mass.data();
@@ -213,21 +265,19 @@ void Solver::chunk_bar_forces(const BarChunks::Chunk& c, const Vec3* x, Vec3* F,
   if (weightless)
     for (std::uint32_t n = c.particles_begin; n < c.particles_end; ++n) {
       const ParticleId p = B.particles[n];
-      F[p] = load[p] + Vec3::Zero();
-      S[p] = 0;
+      const Vec3 f = load[p] + Vec3::Zero();
+      sums[p - base] = ForceSum{f.x(), f.y(), f.z(), 0.0};
     }
   else
     for (std::uint32_t n = c.particles_begin; n < c.particles_end; ++n) {
       const ParticleId p = B.particles[n];
-      F[p] = load[p] + (point_mass[p] + lumped_mass[p]) * g;
-      S[p] = 0;
+      const Vec3 f = load[p] + (point_mass[p] + lumped_mass[p]) * g;
+      sums[p - base] = ForceSum{f.x(), f.y(), f.z(), 0.0};
     }
   const double gf = settings.geometric_factor;
   const bool unit_factor = gf == 1;
   const ParticleId *bi = B.i.data(), *bj = B.j.data();
   BarBlock b;
-  Vec3* slot_f = bar_chunks_.slot_force.data();
-  double* slot_s = bar_chunks_.slot_stiffness.data();
   for (std::uint32_t e0 = c.bars_begin; e0 < c.bars_end; e0 += kBarBlock) {
     const std::uint32_t n = std::min(kBarBlock, c.bars_end - e0);
     for (std::uint32_t m = 0; m < n; ++m) {
@@ -242,39 +292,29 @@ void Solver::chunk_bar_forces(const BarChunks::Chunk& c, const Vec3* x, Vec3* F,
     else bar_block<false>(b, n, k, rest, pre, cable, gf);
     // The block's interior bars [0, interior), then its crossing ones.
     const std::uint32_t interior = std::clamp(c.crossing_begin, e0, e0 + n) - e0;
-    for (std::uint32_t m = 0; m < interior; ++m) {
-      const ParticleId i = bi[e0 + m], j = bj[e0 + m];
-      if (b.L[m] > 0) [[likely]] {
-        const Vec3 f(b.fx[m], b.fy[m], b.fz[m]);
-        F[i] += f;
-        F[j] -= f;
-      }
-      S[i] += b.s[m];
-      S[j] += b.s[m];
-    }
-    for (std::uint32_t m = interior; m < n; ++m) {  // j is another chunk's: its share waits in the slot
-      const std::uint32_t e = e0 + m;
-      const ParticleId i = bi[e];
-      Vec3 f = Vec3::Zero();
-      if (b.L[m] > 0) [[likely]] {
-        f = Vec3(b.fx[m], b.fy[m], b.fz[m]);
-        F[i] += f;
-      }
-      S[i] += b.s[m];
-      const std::uint32_t slot = c.slot_begin + (e - c.crossing_begin);
-      slot_f[slot] = f;
-      slot_s[slot] = b.s[m];
-    }
+    const std::uint32_t first_slot = c.slot_begin + (e0 + interior - c.crossing_begin);
+    const bool crossing = fill_slots && interior < n;
+    scatter_bars(b, n, interior, bi + e0, bj + e0, base, sums,
+                 crossing ? bar_chunks_.slot_force.data() + first_slot : nullptr,
+                 crossing ? bar_chunks_.slot_stiffness.data() + first_slot : nullptr);
   }
+  scratch.pass = pass;
+  scratch.chunk = chunk;
+  return sums;
 }
 
-void Solver::chunk_inbox(const BarChunks::Chunk& c, Vec3* F, double* S) const {
+const ForceSum* Solver::chunk_force_sums(std::uint32_t chunk, const Vec3* x, std::uint64_t pass) const {
+  ChunkSumsScratch& scratch = chunk_sums_scratch;
+  ForceSum* sums =
+      scratch.pass == pass && scratch.chunk == chunk ? scratch.data() : chunk_bar_sums(chunk, x, pass, false);
   const BarChunks& B = bar_chunks_;
+  const BarChunks::Chunk& c = B.chunks[chunk];
+  const ParticleId base = ParticleId(chunk) << B.shift;
   for (std::uint32_t n = c.inbox_begin; n < c.inbox_end; ++n) {
-    const ParticleId p = B.inbox_particle[n];
-    F[p] -= B.slot_force[B.inbox_slot[n]];
-    S[p] += B.slot_stiffness[B.inbox_slot[n]];
+    const Vec3& f = B.slot_force[B.inbox_slot[n]];
+    sums[B.inbox_particle[n] - base] -= ForceSum{f.x(), f.y(), f.z(), -B.slot_stiffness[B.inbox_slot[n]]};
   }
+  return sums;
 }
 
 void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(std::uint32_t)> late) const {
@@ -322,8 +362,19 @@ void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body) const {
 void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S, Vec3* T, double* K) const {
   const Particles& P = model_.particles;
   const BarChunks& B = bar_chunks();
-  for_chunks([&](std::uint32_t c) { chunk_bar_forces(B.chunks[c], x, F, S); },
-             [&](std::uint32_t c) { chunk_inbox(B.chunks[c], F, S); });
+  const std::uint64_t pass = new_chunk_pass();
+  for_chunks([&](std::uint32_t c) { chunk_bar_sums(c, x, pass, true); },
+             [&](std::uint32_t c) {
+               const ForceSum* sums = chunk_force_sums(c, x, pass);
+               const BarChunks::Chunk& ch = B.chunks[c];
+               const ParticleId base = ParticleId(c) << B.shift;
+               for (std::uint32_t n = ch.particles_begin; n < ch.particles_end; ++n) {
+                 const ParticleId p = B.particles[n];
+                 const ForceSum& f = sums[p - base];
+                 F[p] = Vec3(f[0], f[1], f[2]);
+                 S[p] = f[3];
+               }
+             });
   for (ParticleId p : P.rotational.raw()) {
     T[p] = P.moment[p];
     K[p] = 0;

@@ -125,8 +125,9 @@ namespace {
 // lock looked up; the arithmetic of kick_drift, term for term.
 struct KickArgs {
   const std::uint8_t* lock;
-  const double *point_mass, *lumped_mass, *S;
-  const Vec3* F;
+  const double *point_mass, *lumped_mass;
+  double* S;
+  Vec3* F;
   Vec3 *v, *x, *xn;
   double mass_scale, keep, first_B_dt, dt;  // first_B_dt = first * B * dt
 };
@@ -144,12 +145,13 @@ inline double physical_mass(double point, double lumped, const Vec3& free) {
 }
 
 template <bool kPhysical, bool kDrift>
-KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, std::uint32_t end, const KickArgs& a) {
+KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, std::uint32_t end, const KickArgs& a,
+                        const ForceSum* __restrict forces, ParticleId base) {
   static const Vec3 free_of[8] = {free_axes(0), free_axes(1), free_axes(2), free_axes(3),
                                   free_axes(4), free_axes(5), free_axes(6), free_axes(7)};
   const std::uint8_t* __restrict lock = a.lock;
-  const double* __restrict S = a.S;
-  const Vec3* __restrict F = a.F;
+  double* __restrict S = a.S;
+  Vec3* __restrict F = a.F;
   Vec3* __restrict v = a.v;
   const Vec3* __restrict x = a.x;
   Vec3* __restrict xn = a.xn;
@@ -157,15 +159,19 @@ KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, s
   KickSums sums;
   for (std::uint32_t n = begin; n < end; ++n) {
     const ParticleId p = ids[n];
+    const ForceSum sum = forces[p - base];
+    const Vec3 f(sum[0], sum[1], sum[2]);
+    const double s = sum[3];
+    F[p] = f;
+    S[p] = s;
     const Vec3 free = free_of[lock[p] & kLockTranslation];
     double M;
     if constexpr (kPhysical) {
       M = physical_mass(a.point_mass[p], a.lumped_mass[p], free);
     } else {
-      M = mass_scale * S[p];
+      M = mass_scale * s;
     }
-    const Vec3 f = F[p];
-    if (!f.allFinite() || !std::isfinite(S[p]) || !(M > 0)) [[unlikely]] {
+    if (!f.allFinite() || !std::isfinite(s) || !(M > 0)) [[unlikely]] {
       sums.bad = true;
       continue;
     }
@@ -228,17 +234,20 @@ void Solver::fused_kick_drift(bool whole_kick) {
     return physical ? physical_mass(point_mass[p], lumped_mass[p], free) : mass_scale * S[p];
   };
   const KickArgs args{lock, point_mass, lumped_mass, S, F, v, x, xn, mass_scale, keep, first * B * dt, dt};
+  const std::uint64_t pass = new_chunk_pass();
   auto kick_chunk = [&](std::uint32_t c) {
     const BarChunks::Chunk& ch = chunks.chunks[c];
-    chunk_inbox(ch, F, S);
+    const ForceSum* sums = chunk_force_sums(c, x, pass);
+    const ParticleId base = ParticleId(c) << chunks.shift;
     const ParticleId* ids = chunks.particles.data();
-    const KickSums k = physical ? (xn ? kick_particles<true, true>(ids, ch.particles_begin, ch.particles_end, args)
-                                      : kick_particles<true, false>(ids, ch.particles_begin, ch.particles_end, args))
-                                : (xn ? kick_particles<false, true>(ids, ch.particles_begin, ch.particles_end, args)
-                                      : kick_particles<false, false>(ids, ch.particles_begin, ch.particles_end, args));
+    const std::uint32_t b = ch.particles_begin, e = ch.particles_end;
+    const KickSums k = physical ? (xn ? kick_particles<true, true>(ids, b, e, args, sums, base)
+                                      : kick_particles<true, false>(ids, b, e, args, sums, base))
+                                : (xn ? kick_particles<false, true>(ids, b, e, args, sums, base)
+                                      : kick_particles<false, false>(ids, b, e, args, sums, base));
     chunk_sums_[c] = {k.ke, k.momentum2, k.residual2, k.bad};
   };
-  for_chunks([&](std::uint32_t c) { chunk_bar_forces(chunks.chunks[c], x, F, S); }, kick_chunk);
+  for_chunks([&](std::uint32_t c) { chunk_bar_sums(c, x, pass, true); }, kick_chunk);
   ++evaluations_;
   double ke = 0, momentum2 = 0, residual2 = 0;
   bool bad = false;

@@ -211,11 +211,15 @@ class Solver {
   void accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S, Vec3* T, double* K) const;
   // The lean bars (bar_chunks.hpp), derived again when the model changed.
   const BarChunks& bar_chunks() const;
-  // Chunk c's particles start from their loads and take its bars' forces;
-  // its crossing bars fill their slots. Then its inbox adds the slots of
-  // the crossing bars into it.
-  void chunk_bar_forces(const BarChunks::Chunk& c, const Vec3* x, Vec3* F, double* S) const;
-  void chunk_inbox(const BarChunks::Chunk& c, Vec3* F, double* S) const;
+  // A chunk's particles' sums (force, stiffness) in this thread's scratch,
+  // indexed from the chunk's first id: their loads and weights and the
+  // chunk's bars at x (body; fill_slots: its crossing bars' slots too),
+  // then the slots of the crossing bars into it (chunk_force_sums, late).
+  // A pass is a number from new_chunk_pass; the late part takes the sums the
+  // body left on its thread in the same pass, or evaluates them again.
+  static std::uint64_t new_chunk_pass();
+  ForceSum* chunk_bar_sums(std::uint32_t c, const Vec3* x, std::uint64_t pass, bool fill_slots) const;
+  const ForceSum* chunk_force_sums(std::uint32_t c, const Vec3* x, std::uint64_t pass) const;
   // body(c) then late(c) for every chunk, the chunks split over the threads
   // in contiguous ranges; a chunk whose inbox draws on an earlier thread's
   // range runs late(c) once every thread finished its range.
