@@ -164,19 +164,28 @@ KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, s
     const double s = sum[3];
     F[p] = f;
     S[p] = s;
-    const Vec3 free = free_of[lock[p] & kLockTranslation];
+    const std::uint8_t locked = lock[p] & kLockTranslation;
     double M;
     if constexpr (kPhysical) {
-      M = physical_mass(a.point_mass[p], a.lumped_mass[p], free);
+      M = physical_mass(a.point_mass[p], a.lumped_mass[p], free_of[locked]);
     } else {
       M = mass_scale * s;
     }
-    if (!f.allFinite() || !std::isfinite(s) || !(M > 0)) [[unlikely]] {
+    // Every term finite: x - x is 0 for a finite x, NaN for an infinite or
+    // NaN one, and a NaN stays in the sum.
+    const double finite = (f.x() - f.x()) + (f.y() - f.y()) + (f.z() - f.z()) + (s - s);
+    if (!(finite == 0) || !(M > 0)) [[unlikely]] {
       sums.bad = true;
       continue;
     }
-    sums.residual2 = std::max(sums.residual2, f.cwiseProduct(free).squaredNorm());
-    const Vec3 vn = (keep * v[p] + (first_B_dt / M) * f).cwiseProduct(free);  // eq. 3.11 / 3.26
+    Vec3 vn = keep * v[p] + (first_B_dt / M) * f;  // eq. 3.11 / 3.26
+    if (locked == 0) [[likely]] {  // free on every axis: times 1 changes nothing
+      sums.residual2 = std::max(sums.residual2, f.squaredNorm());
+    } else {
+      const Vec3 free = free_of[locked];
+      sums.residual2 = std::max(sums.residual2, f.cwiseProduct(free).squaredNorm());
+      vn = vn.cwiseProduct(free);
+    }
     v[p] = vn;
     const double v2 = vn.squaredNorm();
     sums.ke += M * v2;  // eq. 3.28
