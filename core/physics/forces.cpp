@@ -199,9 +199,9 @@ TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, std::uint32_t n, double gf) 
 
 // A chunk's bars into its particles' sums (indexed from the chunk's first
 // id): an interior bar into both ends, a crossing one into i and, when
-// `slots` is set, its slot. With f = 0 for a bar of no length the sums are
-// those of skipping its force: no component of a sum is -0 (the load is
-// added to a +0 weight, and only -0 + -0 gives -0). S - (-s) is S + s
+// `slots` is set, its slot. A bar of no length adds f = +0, which leaves a
+// sum as skipping its force did, but for the sign of a zero (only a -0
+// load component plus a -0 weight gives a -0 sum). S - (-s) is S + s
 // exactly, so the stiffness rides in the fourth lane of j's subtraction.
 TENDRIL_SIMD_CLONES void scatter_bars(const BarBlock& b, std::uint32_t n, std::uint32_t interior,
                                       const ParticleId* __restrict bi, const ParticleId* __restrict bj, ParticleId base,
