@@ -16,8 +16,8 @@
 # and on a one-node Slurm cluster it starts (bench/sweep.sh; needs root).
 # `net` (only when asked for: minutes) times every integrator to equilibrium
 # on the issue-18 net (bench/bench_net.cpp).
-# `scaling` (only when asked for: minutes) times the default solver choice
-# (newton) to equilibrium on that net from 10K to 1M particles and fits the
+# `scaling` (only when asked for: minutes) times the static Newton solver
+# (its default choice) to equilibrium on that net from 10K to 1M particles and fits the
 # exponent (bench/bench_scaling.cpp; e.g. `bench/run.sh scaling --integrators
 # newton,projective1 --sizes 10K,40K,160K`).
 # `topology` (only when asked for) times one rule application and the step
