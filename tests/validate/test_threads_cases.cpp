@@ -14,7 +14,18 @@
 using namespace tendril;
 using namespace tendril::validate;
 
-TEST_CASE("validation cases: 1 and 3 threads give the same numbers bit for bit") {
+// Under the sanitizers this case alone took 310 s of the suite, to check
+// again what the ordinary build checks: it is a question of numbers, not of
+// memory, and the threaded force paths run under the sanitizers in
+// tests/physics/test_threads.cpp.
+#ifdef TENDRIL_SANITIZED
+constexpr bool kSkipUnderSanitizers = true;
+#else
+constexpr bool kSkipUnderSanitizers = false;
+#endif
+
+TEST_CASE("validation cases: 1 and 3 threads give the same numbers bit for bit" *
+          doctest::skip(kSkipUnderSanitizers)) {
   int settings = 0;
   for (const Case& c : cases()) {
     std::vector<Setting> runs;
