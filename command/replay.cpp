@@ -15,6 +15,9 @@ void replay(std::istream& in, const std::string& name, Session& s) {
   std::size_t number = 0;
   while (std::getline(in, line)) {
     ++number;
+    // Format 1 was written while Leapfrog was the default integrator, so its
+    // steps are Leapfrog's and its model's setting too ("auto" since format 2).
+    if (number == 1 && line.rfind("# tendril journal 1:", 0) == 0) s.solver.settings.integrator = Integrator::Leapfrog;
     if (line.empty() || line[0] == '#') continue;
     const std::string where = name + ":" + std::to_string(number);
     std::istringstream words(line);

@@ -47,9 +47,8 @@ Result apply_settings(Target& t, Args& a) {
 }  // namespace
 
 void declare_solver(std::vector<Command>& out) {
-  const std::vector<const char*> integrators = {"leapfrog", "symplectic_euler", "velocity_verlet", "midpoint",
-                                                "rk4",      "vie",              "projective",      "mixed",
-                                                "newton"};
+  const std::vector<const char*> integrators = {"auto", "leapfrog",   "symplectic_euler", "velocity_verlet", "midpoint",
+                                                "rk4",  "vie",        "projective",       "mixed",           "newton"};
   Command settings{"settings", "the solver's settings (only the keys given change; all are checked first)",
                    Effect::Setting,
                    {{"dt", Type::Number, "time step (> 0)", {}, {}, true},
@@ -80,6 +79,16 @@ void declare_solver(std::vector<Command>& out) {
                 }};
   steps.lua = "";  // m:step and m:run drive the solver from Lua
   out.push_back(std::move(steps));
+  // The steps of "auto" are Leapfrog's, except in a run to equilibrium that
+  // took Newton's: the journal says which, so that a replay takes the same.
+  Command newton_steps{"newton_steps", "solver steps the integrator \"auto\" took as Newton's, in a run to equilibrium",
+                       Effect::Steps, {{"n", Type::Count, "steps", {0, 9007199254740992.0}}}, Returns::Nothing,
+                       [](Target& t, Args& a) {
+                         for (std::uint64_t k = 0; k < a[0].id; ++k) t.solver.step_auto_newton();
+                         return nothing();
+                       }};
+  newton_steps.lua = "";
+  out.push_back(std::move(newton_steps));
   // A step that threw may still have changed the model (velocities reset,
   // forces of the positions it started from): the journal says where one
   // failed, and a replay takes that step again, which fails the same way.

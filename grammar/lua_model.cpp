@@ -543,10 +543,15 @@ int l_run(lua_State* L) {
   // With triggers, rules run between steps; a rule that changes the model at
   // equilibrium keeps the run going.
   RunMonitor monitor(s.model, s.solver, limits);
+  // Rules between the steps count steps and watch the motion: Leapfrog's
+  // steps for them (integrator "auto"); a front end's hook alone leaves
+  // the run static.
+  Solver::RunScope scope(s.solver, s.triggers.empty());
   std::uint64_t at_rest_since = 0;  // the step the model came to rest at (0: moving)
   bool converged = false;
   while (monitor.result().steps < cap) {
     s.solver.step();
+    scope.stepped();
     const bool at_rest = monitor.observe();
     bool changed = !s.triggers.empty() && fire_triggers(L, s, at_rest);
     if (after_step) changed |= after_step(L);

@@ -288,7 +288,8 @@ int l_save_journal(lua_State* L) {
   if (lua_type(L, 2) != LUA_TSTRING) arg_error("save_journal", 2, "expected a file name");
   // The assembly sequence as comments, then the replayable trace; written
   // whole or not at all, so a full disk is an error and the old journal stays.
-  std::string text = "# tendril journal 1: replay with `tendril replay FILE`\n";
+  // Format 2: the default integrator is "auto" (format 1: Leapfrog, command/replay.cpp).
+  std::string text = "# tendril journal 2: replay with `tendril replay FILE`\n";
   std::istringstream table(s.journal.assembly_sequence());
   for (std::string line; std::getline(table, line);) text += "# " + line + "\n";
   for (const std::string& line : s.trace.lines(s.solver)) text += line + "\n";

@@ -45,11 +45,19 @@ namespace tendril::validate {
 // The explicit integrators, then the constraint-based ones.
 std::vector<Integrator> all_integrators();
 
+// A case names its integrators (the matrix's columns): Leapfrog where it
+// does not say, not the scene default "auto", which is Leapfrog or Newton.
+inline SolverSettings leapfrog_settings() {
+  SolverSettings s;
+  s.integrator = Integrator::Leapfrog;
+  return s;
+}
+
 // One point of a case's matrix.
 struct Setting {
   std::string formulation;  // one of Case::formulations
   int segments = 0;         // one of Case::segments (what it counts: Case::resolution)
-  SolverSettings solver;    // integrator, damping, dt, ...
+  SolverSettings solver = leapfrog_settings();  // integrator, damping, dt, ...
 };
 
 struct Outcome {

@@ -13,8 +13,9 @@
 //   section6 B GJ EIy EIz   formulation B 3|6   orientation P W X Y Z
 //   formulation B bars | form SW SF A B C ... | analysis SW SF DXX DXY DYX DYY G A B C ...
 //     (a patch: bars, or CST triangles A B C with A-B along the warp)
-//   torque P X Y Z   steps N   failed_step (a step that threw: replayed, it
-//   must fail the same way)   open PATH (a model database)   # comment
+//   torque P X Y Z   steps N   newton_steps N (steps the integrator "auto"
+//   took as Newton's, in a run)   failed_step (a step that threw: replayed,
+//   it must fail the same way)   open PATH (a model database)   # comment
 // Each line is a command of command/ (docs/commands.md lists their forms);
 // command/replay.hpp replays a trace.
 #include <iosfwd>
@@ -57,11 +58,14 @@ class Trace {
   static std::string vec(const Vec3& v);
 
  private:
-  // Appends "steps N" and "failed_step" lines for the steps and failed
-  // steps (Solver::failed_steps) after `steps` and `failures` up to
-  // `steps_to` and `failures_to`, and advances both.
-  static void pending(const std::vector<std::uint64_t>& failed, std::uint64_t steps_to, std::size_t failures_to,
-                      std::uint64_t& steps, std::size_t& failures, std::vector<std::string>& out);
+  // Appends "steps N", "newton_steps N" and "failed_step" lines for the
+  // steps, the steps "auto" took as Newton's (Solver::auto_newton_steps) and
+  // the failed steps (Solver::failed_steps) after `steps` and `failures` up
+  // to `steps_to` and `failures_to`, and advances both.
+  static void pending(const Solver& s, std::uint64_t steps_to, std::size_t failures_to, std::uint64_t& steps,
+                      std::size_t& failures, std::vector<std::string>& out);
+  // The steps from `steps` to `to`, split where "auto" took Newton's.
+  static void steps_lines(const Solver& s, std::uint64_t steps, std::uint64_t to, std::vector<std::string>& out);
 
   std::vector<std::string> lines_;
   std::uint64_t traced_steps_ = 0;

@@ -57,12 +57,17 @@ Solver::NewtonWork Solver::newton_work() const {
   return {newton_->analyses(), newton_->factorizations(), newton_->iterations()};
 }
 
+const char* Solver::newton_refusal() const {
+  if (const char* kind = NewtonSystem::unsupported(model_)) return kind;
+  if (pressure_acts()) return "pressure or area loads";
+  if (!couples().empty()) return "moments on 3-DOF beams";
+  return nullptr;
+}
+
 void Solver::integrate_newton() {
   Particles& P = model_.particles;
-  const char* kind = NewtonSystem::unsupported(model_);
-  if (!kind && pressure_acts()) kind = "pressure or area loads";
-  if (!kind && !couples().empty()) kind = "moments on 3-DOF beams";
-  if (kind)
+  newton_stalled_ = false;
+  if (const char* kind = newton_refusal())
     throw ModelError(std::string("solver: integrator \"newton\" has no tangent stiffness for ") + kind +
                      " yet (bars, cables and anchor, plane, line and length goals only); use another integrator for this model");
   if (!newton_) newton_ = std::make_shared<NewtonSystem>();
@@ -128,6 +133,7 @@ void Solver::integrate_newton() {
     residual_ = top;
     return;
   }
+  newton_stalled_ = true;
 }
 
 }  // namespace tendril

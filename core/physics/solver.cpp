@@ -28,6 +28,7 @@ const char* integrator_name(Integrator i) {
     case Integrator::ProjectiveDynamics: return "projective";
     case Integrator::Mixed: return "mixed";
     case Integrator::Newton: return "newton";
+    case Integrator::Auto: return "auto";
   }
   return "?";
 }
@@ -39,6 +40,7 @@ std::optional<Integrator> parse_integrator(std::string_view name) {
     if (name == integrator_name(i)) return i;
   for (Integrator i : kStaticIntegrators)
     if (name == integrator_name(i)) return i;
+  if (name == integrator_name(kAutoIntegrator)) return kAutoIntegrator;
   return std::nullopt;
 }
 
@@ -57,6 +59,7 @@ int force_evaluations_per_step(Integrator i) {
     case Integrator::Mixed: return 1;
     // Newton: the residual, then one per trial of its line search.
     case Integrator::Newton: return 1;
+    case Integrator::Auto: return 1;  // Leapfrog's or Newton's
   }
   return 0;
 }
@@ -70,6 +73,7 @@ double fictitious_mass_scale(Integrator i) {
     case Integrator::ProjectiveDynamics:
     case Integrator::Mixed:
     case Integrator::Newton: return 1;  // Newton has no masses: 1 for a switch to another integrator
+    case Integrator::Auto: return 1;    // Leapfrog's
     case Integrator::SymplecticEuler: return 2;
     case Integrator::Midpoint: return 48;
   }
@@ -91,6 +95,7 @@ std::optional<MassMode> parse_mass_mode(std::string_view name) {
 }
 
 const char* Solver::phase() const {
+  if (settings.integrator == Integrator::Auto) return integrator_name(auto_last_);
   if (settings.integrator != Integrator::Mixed) return integrator_name(settings.integrator);
   return mixed_implicit_ ? integrator_name(settings.mixed_implicit) : "leapfrog";
 }
@@ -109,12 +114,39 @@ void Solver::compute_forces() {
 }
 
 void Solver::step() {
+  // Auto steps as the integrator it resolves to: every part of the step
+  // reads settings.integrator, which names it until the step ends.
+  const Integrator chosen = settings.integrator;
+  if (chosen == Integrator::Auto) settings.integrator = auto_last_ = auto_choice_;
   try {
     take_step();
   } catch (...) {
+    settings.integrator = chosen;
     failed_.push_back(steps_);
     throw;
   }
+  settings.integrator = chosen;
+  if (chosen == Integrator::Auto && auto_last_ == Integrator::Newton) {
+    if (auto_newton_steps_.empty() || auto_newton_steps_.back().end != steps_ - 1)
+      auto_newton_steps_.push_back({steps_ - 1, steps_});
+    else
+      auto_newton_steps_.back().end = steps_;
+  }
+}
+
+void Solver::step_auto_newton() {
+  if (settings.integrator != Integrator::Auto)
+    throw ModelError(std::string("solver: a step of \"auto\" as Newton's, but the integrator is \"") +
+                     integrator_name(settings.integrator) + "\"");
+  const Integrator before = auto_choice_;
+  auto_choice_ = Integrator::Newton;
+  try {
+    step();
+  } catch (...) {
+    auto_choice_ = before;
+    throw;
+  }
+  auto_choice_ = before;
 }
 
 void Solver::take_step() {
@@ -145,6 +177,7 @@ void Solver::take_step() {
     case Integrator::ProjectiveDynamics: integrate_projective(); break;
     case Integrator::Mixed: integrate_mixed(); return;  // counts its own step and time
     case Integrator::Newton: break;                     // taken above
+    case Integrator::Auto: break;                       // step() resolved it
   }
   count_step(implicit(settings.integrator) ? vie_dt() : settings.dt);
 }
@@ -317,11 +350,35 @@ RunResult Solver::run(double tolerance, std::uint64_t max_steps,
   return run(RunLimits{tolerance, 0, max_steps}, progress, progress_every);
 }
 
+bool Solver::auto_newton_applies() const {
+  return settings.integrator == Integrator::Auto && settings.mass_mode == MassMode::Fictitious &&
+         settings.damping == Damping::Kinetic && !newton_refusal();
+}
+
+// Auto: Newton for a form-finding run of a model it takes; Leapfrog when it
+// stalls (a mechanism, a slack part K has no stiffness for) or is slow to
+// converge, from the positions it reached, which are nearer equilibrium
+// (each Newton step lowers the energy). m:step stays Leapfrog.
+Solver::RunScope::RunScope(Solver& s, bool statics) : s_(s) {
+  s_.auto_choice_ = statics && s_.auto_newton_applies() ? Integrator::Newton : Integrator::Leapfrog;
+}
+
+Solver::RunScope::~RunScope() { s_.auto_choice_ = Integrator::Leapfrog; }
+
+void Solver::RunScope::stepped() {
+  // A hook or a front end may have changed the model or the settings.
+  if (s_.auto_choice_ == Integrator::Newton &&
+      (s_.newton_stalled_ || ++newton_steps_ >= kAutoNewtonSteps || !s_.auto_newton_applies()))
+    s_.auto_choice_ = Integrator::Leapfrog;
+}
+
 RunResult Solver::run(const RunLimits& limits, const std::function<void(const RunResult&)>& progress,
                       std::uint64_t progress_every) {
   RunMonitor monitor(model_, *this, limits);
+  RunScope scope(*this);
   while (monitor.result().steps < limits.max_steps) {
     step();
+    scope.stepped();
     if (monitor.observe()) return monitor.finish(true);
     if (monitor.failed()) break;
     if (progress && monitor.result().steps % progress_every == 0) progress(monitor.result());

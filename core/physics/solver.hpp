@@ -50,7 +50,7 @@ const char* damping_name(Damping d);
 // length goals only: a model with any other element refuses it with an
 // error naming the element kind.
 enum class Integrator { Leapfrog, SymplecticEuler, VelocityVerlet, Midpoint, RK4, VariationalImplicitEuler,
-                        ProjectiveDynamics, Mixed, Newton };
+                        ProjectiveDynamics, Mixed, Newton, Auto };
 // The explicit integrators (eq. 3.9-3.25).
 inline constexpr std::array<Integrator, 5> kIntegrators = {Integrator::Leapfrog, Integrator::SymplecticEuler,
                                                           Integrator::VelocityVerlet, Integrator::Midpoint,
@@ -58,8 +58,11 @@ inline constexpr std::array<Integrator, 5> kIntegrators = {Integrator::Leapfrog,
 inline constexpr std::array<Integrator, 3> kConstraintIntegrators = {
     Integrator::VariationalImplicitEuler, Integrator::ProjectiveDynamics, Integrator::Mixed};
 inline constexpr std::array<Integrator, 1> kStaticIntegrators = {Integrator::Newton};
+// The default: Leapfrog for a step in time, the static Newton solver for a
+// run() to equilibrium where it is safe (Solver::run says when).
+inline constexpr Integrator kAutoIntegrator = Integrator::Auto;
 // "leapfrog", "symplectic_euler", "velocity_verlet", "midpoint", "rk4",
-// "vie", "projective", "mixed", "newton".
+// "vie", "projective", "mixed", "newton", "auto".
 const char* integrator_name(Integrator i);
 std::optional<Integrator> parse_integrator(std::string_view name);
 int force_evaluations_per_step(Integrator i);
@@ -98,8 +101,9 @@ struct SolverSettings {
   // Switchable between steps. Kinetic damping works with all: Leapfrog and
   // Symplectic Euler (the same kick-drift recurrence) move back to Barnes'
   // interpolated peak (eq. 3.29-3.31); the others stay at the step's start
-  // (the discrete peak). Velocities are zeroed.
-  Integrator integrator = Integrator::Leapfrog;
+  // (the discrete peak). Velocities are zeroed. Auto, the default:
+  // kAutoIntegrator.
+  Integrator integrator = Integrator::Auto;
   MassMode mass_mode = MassMode::Fictitious;
   // Constraint-based solvers: local-global iterations per step, and their
   // time step. vie_iterations = 0 (the default) lets the solver choose:
@@ -150,8 +154,19 @@ class Solver {
   // started from - so the trace journals it (`failed_step`, io/trace.hpp)
   // and a replay takes it again, failing the same way.
   const std::vector<std::uint64_t>& failed_steps() const { return failed_; }
+  // Integrator Auto: the steps it took as Newton's, in runs to equilibrium,
+  // as ranges [first, end) of steps(), in order (a journal writes them as
+  // "newton_steps N"); and one such step, as a replay takes it again.
+  struct StepRange {
+    std::uint64_t first, end;
+  };
+  const std::vector<StepRange>& auto_newton_steps() const { return auto_newton_steps_; }
+  void step_auto_newton();
   // Steps until both the residual and motion() are below `tolerance` [N], or
-  // `max_steps` were taken.
+  // `max_steps` were taken. With the integrator Auto, the steps are Newton's
+  // while newton_refusal() is null, the masses fictitious and the damping
+  // kinetic (a form-finding run, not dynamics), until Newton converges,
+  // stalls or took kAutoNewtonSteps; then Leapfrog's from where it left.
   // `progress` (if set) is called every `progress_every` steps.
   RunResult run(double tolerance, std::uint64_t max_steps,
                 const std::function<void(const RunResult&)>& progress = {}, std::uint64_t progress_every = 1000);
@@ -175,8 +190,30 @@ class Solver {
   double time() const { return time_; }
   std::uint64_t kinetic_resets() const { return resets_; }
   std::uint64_t force_evaluations() const { return evaluations_; }  // a local step counts as one
-  // Mixed: "leapfrog", "vie" or "projective", the phase of the last step; else the integrator's name.
+  // Mixed: "leapfrog", "vie" or "projective", the phase of the last step;
+  // Auto: "leapfrog" or "newton", the integrator of the last step; else the integrator's name.
   const char* phase() const;
+  // Why the Newton solver cannot take this model ("hinges (3-DOF spline
+  // beams)", "pressure or area loads", ...), or nullptr.
+  const char* newton_refusal() const;
+  static constexpr int kAutoNewtonSteps = 50;
+  // A run to equilibrium, for as long as it lives: with the integrator
+  // Auto, its steps are Newton's where auto_newton_applies() and `statics`
+  // (a run with rules between its steps passes false), Leapfrog's once
+  // Newton stalled or took kAutoNewtonSteps. run() holds one; a caller that
+  // drives step() itself holds its own and calls stepped() after each step.
+  class RunScope {
+   public:
+    explicit RunScope(Solver& s, bool statics = true);
+    ~RunScope();
+    RunScope(const RunScope&) = delete;
+    RunScope& operator=(const RunScope&) = delete;
+    void stepped();
+
+   private:
+    Solver& s_;
+    int newton_steps_ = 0;
+  };
   // ProjectiveDynamics: how often its global matrix was factored.
   std::uint64_t factorizations() const;
   // ProjectiveDynamics: how many topology or parameter changes it followed
@@ -287,6 +324,12 @@ class Solver {
   void integrate_projective();
   void integrate_mixed();
   void integrate_newton();  // newton_step.cpp
+  bool newton_stalled_ = false;  // the last Newton step found no downhill step and moved nothing
+  // Auto: what a step resolves to (Newton only inside a run that chose it),
+  // and what the last step ran as.
+  Integrator auto_choice_ = Integrator::Leapfrog, auto_last_ = Integrator::Leapfrog;
+  std::vector<StepRange> auto_newton_steps_;
+  bool auto_newton_applies() const;
   void start_implicit_step(double dt);  // x0 of eq. 3.57 into x0_, first guess into xs_, qs_
   void finish_implicit_step(double dt);  // velocities (eq. 3.64), kinetic damping, commit
   // Ends a step of a synchronous integrator whose new state is (xn, vn) and,

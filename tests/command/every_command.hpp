@@ -61,6 +61,7 @@ inline void apply_every_command(Recorded& r, const std::filesystem::path& base) 
     save_model_xml(m, s.settings, base.string());
   }
   r.run("open", {word(base.string().c_str())});
+  r.run("newton_steps", {id(2)});  // "auto", the default, as a run takes Newton's steps
   r.run("settings", {num(0.5), word("kinetic"), none(), none(), num(1.5), word("leapfrog"), none(), none(), none(),
                      none(), none()});
   r.run("gravity", {vec(0, 0, -9.81)});

@@ -44,8 +44,11 @@ TEST_CASE("every registered command is applied, journaled and replayed bit for b
     CHECK(r.used.count(c.name) == 1);  // a new command needs a line in apply_every_command
   }
   CHECK(r.model.check() == "");
-  CHECK(r.solver.steps() == 5);
+  CHECK(r.solver.steps() == 7);
   const std::string journal = "\n" + r.journal_text();
+  // The steps "auto" took as Newton's, apart from the others.
+  CHECK(journal.find("\nnewton_steps 2\n") != std::string::npos);
+  CHECK(journal.find("\nsteps 3\n") != std::string::npos);
   for (const command::Command& c : command::commands()) {
     if (c.effect == command::Effect::Steps) continue;
     CAPTURE(std::string(c.name));
@@ -109,7 +112,7 @@ TEST_CASE("a refused argument names the command and the argument, and changes no
       {"settings", {num(-1), none(), none(), none(), none(), none(), none(), none(), none(), none(), none()},
        "settings: 'dt' must be a finite number > 0"},
       {"settings", {none(), none(), none(), none(), none(), word("euler"), none(), none(), none(), none(), none()},
-       "settings: 'integrator' must be one of \"leapfrog\", \"symplectic_euler\", \"velocity_verlet\", \"midpoint\", "
+       "settings: 'integrator' must be one of \"auto\", \"leapfrog\", \"symplectic_euler\", \"velocity_verlet\", \"midpoint\", "
        "\"rk4\", \"vie\", \"projective\", \"mixed\", \"newton\", got \"euler\""},
       {"steps", {id(std::uint64_t(1) << 60)}, "steps: 'n' must be a whole number from 0 to 9.0072e+15"},
       {"formulation", {id(0), word("7"), none(), none(), none(), none(), none(), none(), none(), none()},

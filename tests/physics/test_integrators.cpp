@@ -156,7 +156,7 @@ TEST_CASE("integrators: names round-trip and unknown names are refused") {
   CHECK(parse_mass_mode(mass_mode_name(MassMode::Fictitious)) == MassMode::Fictitious);
   CHECK(!parse_mass_mode("real").has_value());
   const SolverSettings defaults;
-  CHECK(defaults.integrator == Integrator::Leapfrog);
+  CHECK(defaults.integrator == Integrator::Auto);
   CHECK(defaults.mass_mode == MassMode::Fictitious);
 }
 

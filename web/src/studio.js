@@ -170,7 +170,7 @@ function updateStats() {
 
 let gui = null;
 const list = (x) => (Array.isArray(x) ? x : []);  // an empty Lua table comes as {}
-const INTEGRATORS = ['leapfrog', 'symplectic_euler', 'velocity_verlet', 'midpoint', 'rk4', 'vie', 'projective', 'mixed', 'newton'];
+const INTEGRATORS = ['auto', 'leapfrog', 'symplectic_euler', 'velocity_verlet', 'midpoint', 'rk4', 'vie', 'projective', 'mixed', 'newton'];
 function onHello(h) {
   studio.hello = h;
   if (gui) gui.destroy();
