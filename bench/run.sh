@@ -17,7 +17,8 @@
 # `net` (only when asked for: minutes) times every integrator to equilibrium
 # on the issue-18 net (bench/bench_net.cpp).
 # `scaling` (only when asked for: minutes) times the static Newton solver
-# (its default choice) to equilibrium on that net from 10K to 1M particles and fits the
+# (the benchmark's default choice; `auto`, tendril's default, takes the same
+# steps here) to equilibrium on that net from 10K to 1M particles and fits the
 # exponent (bench/bench_scaling.cpp; e.g. `bench/run.sh scaling --integrators
 # newton,projective1 --sizes 10K,40K,160K`).
 # `topology` (only when asked for) times one rule application and the step

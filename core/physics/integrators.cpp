@@ -198,7 +198,8 @@ KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, s
 }  // namespace
 
 bool Solver::fused_kick_drift_applies() const {
-  const Integrator i = settings.integrator;
+  // Auto, read between steps (fused_step_bytes): what its next step takes.
+  const Integrator i = settings.integrator == Integrator::Auto ? auto_choice_ : settings.integrator;
   return (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) && model_.hinges.awake == 0 &&
          model_.beam6s.awake == 0 && model_.joints.items.empty() && model_.goals.empty() &&
          model_.csts.items.empty() && model_.particles.rotational.empty() && couples().empty() &&

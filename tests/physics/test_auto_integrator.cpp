@@ -84,6 +84,8 @@ TEST_CASE("auto: the default; a run of bars and cables is Newton's, a step Leapf
   CHECK(std::string(ss.phase()) == "leapfrog");
   CHECK(largest_distance(ms, mt) == 0);
   CHECK(ss.residual() == st.residual());
+  CHECK(ss.fused_step_bytes() > 0);  // the fused bar step, as Leapfrog's
+  CHECK(ss.fused_step_bytes() == st.fused_step_bytes());
 }
 
 TEST_CASE("auto: Leapfrog for a model Newton refuses and for dynamics, bit for bit") {
