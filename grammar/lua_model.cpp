@@ -527,7 +527,7 @@ int l_run(lua_State* L) {
   auto finish = [&](const RunResult& r) {
     // A membrane that folded is not a shape, converged or not: said with
     // the worst quad, and listed in the result.
-    const std::vector<meshing::FoldedQuad> folded = meshing::folded_quads(s.model);
+    const std::vector<meshing::FoldedQuad> folded = s.folded(s.model);
     g_report->ran = true;
     g_report->converged = r.converged;
     g_report->verdict = verdict_name(r.verdict);

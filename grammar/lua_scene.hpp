@@ -8,6 +8,7 @@
 
 #include "lua_host.hpp"
 #include "command/session.hpp"
+#include "folded_quads.hpp"
 #include "io/trace.hpp"
 #include "model/journal.hpp"
 #include "model/model.hpp"
@@ -37,6 +38,7 @@ struct Scene {
   // The verdict of the model's last m:run{} (physics/run_verdict.hpp), or
   // "none": m:summary reports it, so tendril.report's summary.csv does.
   const char* last_verdict = "none";
+  meshing::FoldedQuadCheck folded;  // what every m:run{} reports (its quads kept while the topology holds)
   ~Scene();
 };
 
