@@ -12,24 +12,13 @@
 
 #include "model/model.hpp"
 #include "physics/solver.hpp"
+#include "prestressed_net.hpp"
 
 using namespace tendril;
 
 namespace {
 
-// An s x s net 1 m apart, boundary locked, 1 N in -z on the interior.
-std::vector<ParticleId> net(Model& m, int s) {
-  std::vector<ParticleId> grid;
-  for (int r = 0; r < s; ++r)
-    for (int c = 0; c < s; ++c) {
-      const ParticleId p = m.add_particle(Vec3(c, r, 0));
-      grid.push_back(p);
-      if (r == 0 || c == 0 || r == s - 1 || c == s - 1) m.set_lock(p, kLockTranslation);
-      else m.set_load(p, Vec3(0, 0, -1));
-    }
-  m.add_quad_grid(grid, s, s, Section{1e5, 0, 1e3, 0});
-  return grid;
-}
+std::vector<ParticleId> net(Model& m, int s) { return test::prestressed_net(m, s); }
 
 // A straight chain of cables at their rest length, ends locked, 10 N in -z
 // on its inner particles: no tension, so no transverse stiffness, and the

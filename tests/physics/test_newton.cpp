@@ -16,25 +16,13 @@
 #include "model/model.hpp"
 #include "physics/newton.hpp"
 #include "physics/solver.hpp"
+#include "prestressed_net.hpp"
 
 using namespace tendril;
 
 namespace {
 
-// An s x s net 1 m apart, boundary locked, `load` in -z on the interior
-// (the issue-18 net, small).
-std::vector<ParticleId> net(Model& m, int s, double load = 1.0) {
-  std::vector<ParticleId> grid;
-  for (int r = 0; r < s; ++r)
-    for (int c = 0; c < s; ++c) {
-      const ParticleId p = m.add_particle(Vec3(c, r, 0));
-      grid.push_back(p);
-      if (r == 0 || c == 0 || r == s - 1 || c == s - 1) m.set_lock(p, kLockTranslation);
-      else m.set_load(p, Vec3(0, 0, -load));
-    }
-  m.add_quad_grid(grid, s, s, Section{1e5, 0, 1e3, 0});
-  return grid;
-}
+std::vector<ParticleId> net(Model& m, int s, double load = 1.0) { return test::prestressed_net(m, s, load); }
 
 double largest_distance(const Model& a, const Model& b) {
   double d = 0;

@@ -12,6 +12,7 @@
 
 #include "model/model.hpp"
 #include "physics/solver.hpp"
+#include "prestressed_net.hpp"
 
 using namespace tendril;
 
@@ -21,16 +22,7 @@ namespace {
 // prestress 1e3 N), the boundary fixed, 1 N down on every other particle.
 std::vector<Vec3> net_equilibrium(int iterations, std::uint64_t& steps, std::uint64_t& evaluations) {
   Model m;
-  const int side = 12;
-  std::vector<ParticleId> grid;
-  for (int r = 0; r < side; ++r)
-    for (int c = 0; c < side; ++c) {
-      const ParticleId p = m.add_particle(Vec3(c, r, 0));
-      grid.push_back(p);
-      if (r == 0 || c == 0 || r == side - 1 || c == side - 1) m.set_lock(p, kLockTranslation);
-      else m.set_load(p, Vec3(0, 0, -1));
-    }
-  m.add_quad_grid(grid, side, side, Section{1e5, 0, 1e3, 0});
+  const std::vector<ParticleId> grid = test::prestressed_net(m, 12);
   Solver s(m);
   s.settings.integrator = Integrator::ProjectiveDynamics;
   s.settings.vie_iterations = iterations;

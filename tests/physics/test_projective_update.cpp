@@ -12,6 +12,7 @@
 
 #include "model/model.hpp"
 #include "physics/solver.hpp"
+#include "prestressed_net.hpp"
 
 using namespace tendril;
 
@@ -24,15 +25,7 @@ struct Net {
   Model m;
   int s;
   std::vector<ParticleId> grid;
-  explicit Net(int side) : s(side) {
-    for (int r = 0; r < s; ++r)
-      for (int c = 0; c < s; ++c) {
-        const ParticleId p = m.add_particle(Vec3(c, r, 0));
-        grid.push_back(p);
-        if (r == 0 || c == 0 || r == s - 1 || c == s - 1) m.set_lock(p, kLockTranslation);
-        else m.set_load(p, Vec3(0, 0, -1));
-      }
-    m.add_quad_grid(grid, s, s, Section{1e5, 0, 1e3, 0});
+  explicit Net(int side) : s(side), grid(test::prestressed_net(m, side)) {
     for (int k = 1; k < 10; k += 2) m.add_cable(at(r(k), c(k) + 1), at(r(k) + 1, c(k)), Section{2e5, 0, 0, 0});
   }
   static int r(int k) { return 1 + 2 * (k % 5); }
