@@ -543,19 +543,19 @@ int l_run(lua_State* L) {
   // With triggers, rules run between steps; a rule that changes the model at
   // equilibrium keeps the run going.
   RunMonitor monitor(s.model, s.solver, limits);
-  // Rules between the steps count steps and watch the motion: Leapfrog's
-  // steps for them (integrator "auto"); a front end's hook alone leaves
-  // the run static.
-  Solver::RunScope scope(s.solver, s.triggers.empty());
+  // Rules that count steps or watch the motion between them have
+  // Leapfrog's steps (integrator "auto"); rules at equilibrium and a front
+  // end's hook leave the run static.
+  Solver::RunScope scope(s.solver, triggers_only_at_equilibrium(s));
   std::uint64_t at_rest_since = 0;  // the step the model came to rest at (0: moving)
   bool converged = false;
   while (monitor.result().steps < cap) {
     s.solver.step();
-    scope.stepped();
     const bool at_rest = monitor.observe();
     bool changed = !s.triggers.empty() && fire_triggers(L, s, at_rest);
     if (after_step) changed |= after_step(L);
     if (changed) monitor.model_changed();
+    scope.stepped();
     if (!at_rest || changed) at_rest_since = 0;
     else if (at_rest_since == 0) at_rest_since = s.solver.steps();
     if (at_rest && !changed && every_triggers_had_their_turn(s, at_rest_since)) {

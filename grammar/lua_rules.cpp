@@ -451,6 +451,12 @@ bool fire_triggers(lua_State* L, Scene& s, bool converged) {
   return changed;
 }
 
+bool triggers_only_at_equilibrium(const Scene& s) {
+  for (const Trigger* t : s.triggers)
+    if (!t->on_equilibrium) return false;
+  return true;
+}
+
 bool every_triggers_had_their_turn(const Scene& s, std::uint64_t since) {
   for (const Trigger* t : s.triggers)
     if (t->every > 0 && !(t->max >= 0 && t->applied >= t->max) && t->last_due < since) return false;

@@ -24,6 +24,11 @@ std::string describe_args(lua_State* L, int first, int last);
 // changed the model. The model userdata must be at stack index 1.
 bool fire_triggers(lua_State* L, Scene& s, bool converged);
 
+// Whether every trigger fires on equilibrium alone (none counts steps or
+// watches the motion), so that a run may take the static Newton solver's
+// steps between them (integrator "auto").
+bool triggers_only_at_equilibrium(const Scene& s);
+
 // Whether every `every = N` trigger that may still apply was due at a step
 // >= `since` (the step the model came to rest): a run ends at equilibrium
 // only once each has had its turn there, so a rule every N steps also fires

@@ -359,14 +359,20 @@ bool Solver::auto_newton_applies() const {
 // stalls (a mechanism, a slack part K has no stiffness for) or is slow to
 // converge, from the positions it reached, which are nearer equilibrium
 // (each Newton step lowers the energy). m:step stays Leapfrog.
-Solver::RunScope::RunScope(Solver& s, bool statics) : s_(s) {
-  s_.auto_choice_ = statics && s_.auto_newton_applies() ? Integrator::Newton : Integrator::Leapfrog;
-}
+Solver::RunScope::RunScope(Solver& s, bool statics) : s_(s), statics_(statics) { choose(); }
 
 Solver::RunScope::~RunScope() { s_.auto_choice_ = Integrator::Leapfrog; }
 
+void Solver::RunScope::choose() {
+  s_.auto_choice_ = statics_ && s_.auto_newton_applies() ? Integrator::Newton : Integrator::Leapfrog;
+  revision_ = s_.model_.revision;
+  newton_steps_ = 0;
+}
+
 void Solver::RunScope::stepped() {
-  // A hook or a front end may have changed the model or the settings.
+  // A rule or a front end changed the model: a new start for Newton, or
+  // none (a beam joined).
+  if (s_.model_.revision != revision_) return choose();
   if (s_.auto_choice_ == Integrator::Newton &&
       (s_.newton_stalled_ || ++newton_steps_ >= kAutoNewtonSteps || !s_.auto_newton_applies()))
     s_.auto_choice_ = Integrator::Leapfrog;

@@ -199,9 +199,12 @@ class Solver {
   static constexpr int kAutoNewtonSteps = 50;
   // A run to equilibrium, for as long as it lives: with the integrator
   // Auto, its steps are Newton's where auto_newton_applies() and `statics`
-  // (a run with rules between its steps passes false), Leapfrog's once
-  // Newton stalled or took kAutoNewtonSteps. run() holds one; a caller that
-  // drives step() itself holds its own and calls stepped() after each step.
+  // (a run with rules between its steps that count them or watch the
+  // motion passes false), Leapfrog's once Newton stalled or took
+  // kAutoNewtonSteps since the model last changed; a change (a rule, a
+  // front end) decides again. run() holds one; a caller that drives step()
+  // itself holds its own and calls stepped() after each step and whatever
+  // it changed after it.
   class RunScope {
    public:
     explicit RunScope(Solver& s, bool statics = true);
@@ -211,7 +214,10 @@ class Solver {
     void stepped();
 
    private:
+    void choose();
     Solver& s_;
+    bool statics_;
+    std::uint64_t revision_;
     int newton_steps_ = 0;
   };
   // ProjectiveDynamics: how often its global matrix was factored.

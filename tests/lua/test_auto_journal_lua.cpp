@@ -1,6 +1,6 @@
 // The integrator "auto" in a journal: a scene's runs to equilibrium take
-// Newton's steps (a run Newton stalls on goes on with Leapfrog's), its
-// m:step Leapfrog's; the journal writes which ("newton_steps N" apart from
+// Newton's steps (between rules fired at equilibrium too; a run Newton
+// stalls on goes on with Leapfrog's), its m:step Leapfrog's; the journal writes which ("newton_steps N" apart from
 // "steps N") and replays to the same model bit for bit. A format-1 journal
 // (written while Leapfrog was the default) replays with Leapfrog.
 #include <doctest/doctest.h>
@@ -31,6 +31,11 @@ assert(m:settings().phase == "leapfrog")
 m:load(grid[20], { 0, 0, -50 })
 local second = m:run{ tolerance = 1e-8 }
 assert(second.converged and m:settings().phase == "newton")
+-- A rule at equilibrium (twice): the run takes Newton's steps between.
+local heavier = tendril.rule{ name = "heavier", production = function(m) m:load(grid[28], { 0, 0, -20 }) end }
+m:trigger{ rule = heavier, on = "equilibrium", max = 2 }
+local grown = m:run{ tolerance = 1e-8 }
+assert(grown.converged and grown.steps < 30 and m:settings().phase == "newton", grown.steps)
 -- A chain of cables at rest length, loaded across: no transverse
 -- stiffness, so Newton stalls and Leapfrog finishes the run.
 local c0 = m:particle{ 0, -3, 0 }
@@ -50,18 +55,23 @@ m:save_journal(tendril.out("journal.txt"))
   REQUIRE(error == "");
   const std::string journal = slurp(dir / "journal.txt");
   CHECK(journal.rfind("# tendril journal 2:", 0) == 0);
-  // newton_steps, then Leapfrog's 5, then newton_steps again; the chain's
-  // run: one Newton step that stalled, then Leapfrog's.
+  // newton_steps, then Leapfrog's 5, then newton_steps again, and between
+  // the rule's loads; the chain's run: one Newton step that stalled, then
+  // Leapfrog's.
   std::istringstream lines(journal);
   std::vector<std::string> stepping;
-  for (std::string line; std::getline(lines, line);)
+  int loads = 0;
+  for (std::string line; std::getline(lines, line);) {
     if (line.rfind("steps ", 0) == 0 || line.rfind("newton_steps ", 0) == 0) stepping.push_back(line);
-  REQUIRE(stepping.size() == 5);
+    loads += line.rfind("load ", 0) == 0;
+  }
+  REQUIRE(stepping.size() >= 6);
   CHECK(stepping[0].rfind("newton_steps ", 0) == 0);
   CHECK(stepping[1] == "steps 5");
-  CHECK(stepping[2].rfind("newton_steps ", 0) == 0);
-  CHECK(stepping[3] == "newton_steps 1");
-  CHECK(stepping[4].rfind("steps ", 0) == 0);
+  for (std::size_t k = 2; k + 2 < stepping.size(); ++k) CHECK(stepping[k].rfind("newton_steps ", 0) == 0);
+  CHECK(stepping[stepping.size() - 2] == "newton_steps 1");
+  CHECK(stepping.back().rfind("steps ", 0) == 0);
+  CHECK(loads == 36 + 1 + 2 + 1);  // the net's interior, grid[20]'s, the rule's two, the chain's
   Replayed replayed(dir / "journal.txt");
   CHECK(replayed.model.check() == "");
   CHECK(replayed.xml() == slurp(dir / "live.xml"));
