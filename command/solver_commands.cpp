@@ -93,14 +93,18 @@ void declare_solver(std::vector<Command>& out) {
   // forces of the positions it started from): the journal says where one
   // failed, and a replay takes that step again, which fails the same way.
   Command failed_step{"failed_step", "a solver step that failed (threw) when the journal was written; it must fail again",
-                      Effect::Steps, {}, Returns::Nothing, [](Target& t, Args&) {
+                      Effect::Steps,
+                      {{"as", Type::Word, "newton: a step \"auto\" took as Newton's", {}, {"newton"}, true}},
+                      Returns::Nothing, [](Target& t, Args& a) {
                         try {
-                          t.solver.step();
+                          if (a[0].given) t.solver.step_auto_newton();
+                          else t.solver.step();
                         } catch (const std::exception&) {
                           return nothing();
                         }
                         throw ModelError("failed_step: the step succeeded here (this is not the model the journal failed a step of)");
                       }};
+  failed_step.keyed = true;  // `failed_step` or `failed_step as=newton`
   failed_step.lua = "";
   out.push_back(std::move(failed_step));
   Command open{"open", "a model database (XML) to start from", Effect::Topology,

@@ -30,7 +30,7 @@ void Trace::pending(const Solver& s, std::uint64_t steps_to, std::size_t failure
   for (; failures < failures_to; ++failures) {
     if (failed[failures] > steps) steps_lines(s, steps, failed[failures], out);
     steps = std::max(steps, failed[failures]);
-    out.push_back("failed_step");
+    out.push_back(s.failed_as_newton(failures) ? "failed_step as=newton" : "failed_step");
   }
   if (steps_to > steps) steps_lines(s, steps, steps_to, out);
   steps = std::max(steps, steps_to);

@@ -14,8 +14,9 @@
 //   formulation B bars | form SW SF A B C ... | analysis SW SF DXX DXY DYX DYY G A B C ...
 //     (a patch: bars, or CST triangles A B C with A-B along the warp)
 //   torque P X Y Z   steps N   newton_steps N (steps the integrator "auto"
-//   took as Newton's, in a run)   failed_step (a step that threw: replayed,
-//   it must fail the same way)   open PATH (a model database)   # comment
+//   took as Newton's, in a run)   failed_step [as=newton] (a step that threw,
+//   Newton's for "auto": replayed, it must fail the same way)
+//   open PATH (a model database)   # comment
 // Each line is a command of command/ (docs/commands.md lists their forms);
 // command/replay.hpp replays a trace.
 #include <iosfwd>

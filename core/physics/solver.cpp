@@ -123,6 +123,7 @@ void Solver::step() {
   } catch (...) {
     settings.integrator = chosen;
     failed_.push_back(steps_);
+    failed_newton_.push_back(chosen == Integrator::Auto && auto_last_ == Integrator::Newton);
     throw;
   }
   settings.integrator = chosen;

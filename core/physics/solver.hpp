@@ -154,6 +154,9 @@ class Solver {
   // started from - so the trace journals it (`failed_step`, io/trace.hpp)
   // and a replay takes it again, failing the same way.
   const std::vector<std::uint64_t>& failed_steps() const { return failed_; }
+  // Whether the k-th failed step was one "auto" took as Newton's (the
+  // journal says so: `failed_step as=newton`, replayed by step_auto_newton).
+  bool failed_as_newton(std::size_t k) const { return failed_newton_[k]; }
   // Integrator Auto: the steps it took as Newton's, in runs to equilibrium,
   // as ranges [first, end) of steps(), in order (a journal writes them as
   // "newton_steps N"); and one such step, as a replay takes it again.
@@ -356,6 +359,7 @@ class Solver {
   bool half_step_ = false;  // velocities are Leapfrog's, half a step behind the positions
   std::uint64_t steps_ = 0, resets_ = 0, evaluations_ = 0;
   std::vector<std::uint64_t> failed_;
+  std::vector<bool> failed_newton_;  // per failed step: taken as Newton's by "auto"
   void take_step();
   double time_ = 0;
   // Scratch, sized to the particle capacity (on growth only, never per step).

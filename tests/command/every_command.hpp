@@ -174,7 +174,7 @@ inline void apply_every_command(Recorded& r, const std::filesystem::path& base) 
   physical[6] = word("physical");
   fictitious[6] = word("fictitious");
   r.run("settings", physical);
-  r.run("failed_step", {});
+  r.run("failed_step", {none()});
   r.run("settings", fictitious);
 }
 

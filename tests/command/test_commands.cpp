@@ -259,6 +259,29 @@ TEST_CASE("a failed step is journaled, and its replay fails it again to the same
                        ModelError);
 }
 
+// fuzz_commands' finding at stop 30: a step "auto" takes as Newton's that
+// fails (here Newton refuses the beam) was journaled as a plain
+// failed_step, which a replay took as Leapfrog's, and it succeeded. The
+// journal says `failed_step as=newton`, and the replay fails it the same way.
+TEST_CASE("a failed Newton step of \"auto\" is journaled as such, and its replay fails it again") {
+  Recorded r;
+  const std::uint32_t a = r.particle(0, 0, 0), m = r.particle(1, 0, 0.2), e = r.particle(2, 0, 0);
+  r.run("beam", join(join({id(0)}, section(1e4, 10)), {ids({a, m, e})}));
+  r.run("lock", {id(a), id(7)});
+  r.run("lock", {id(e), id(7)});
+  r.run("steps", {id(2)});
+  CHECK_THROWS_WITH_AS(r.run("newton_steps", {id(1)}), doctest::Contains("hinges"), ModelError);
+  CHECK(r.solver.failed_steps() == std::vector<std::uint64_t>{2});
+  CHECK(r.solver.failed_as_newton(0));
+  const std::string journal = r.journal_text();
+  CHECK(journal.find("\nsteps 2\nfailed_step as=newton\n") != std::string::npos);
+  CHECK(replayed_xml(journal) == r.xml());
+  // As a plain failed step the replay's Leapfrog step succeeds: refused.
+  std::string plain = journal;
+  plain.replace(plain.find("failed_step as=newton"), 21, "failed_step");
+  CHECK_THROWS_WITH_AS(replayed_xml(plain), doctest::Contains("failed_step: the step succeeded here"), ModelError);
+}
+
 // fuzz_commands' second finding: this bar (line mass 1e12 on a rest length
 // of 1.8e308) lumped an infinite mass on its ends, and the model failed its
 // check. Rest lengths and line masses are bounded (model/limits.hpp), by the
