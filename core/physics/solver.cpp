@@ -40,7 +40,7 @@ std::optional<Integrator> parse_integrator(std::string_view name) {
     if (name == integrator_name(i)) return i;
   for (Integrator i : kStaticIntegrators)
     if (name == integrator_name(i)) return i;
-  if (name == integrator_name(kAutoIntegrator)) return kAutoIntegrator;
+  if (name == integrator_name(Integrator::Auto)) return Integrator::Auto;
   return std::nullopt;
 }
 

@@ -49,6 +49,8 @@ const char* damping_name(Damping d);
 // no masses, velocities zero. Bars, cables and anchor, plane, line and
 // length goals only: a model with any other element refuses it with an
 // error naming the element kind.
+// Auto, the default: Leapfrog for a step in time, the static Newton solver
+// for a run to equilibrium where it is safe (Solver::RunScope says when).
 enum class Integrator { Leapfrog, SymplecticEuler, VelocityVerlet, Midpoint, RK4, VariationalImplicitEuler,
                         ProjectiveDynamics, Mixed, Newton, Auto };
 // The explicit integrators (eq. 3.9-3.25).
@@ -58,9 +60,6 @@ inline constexpr std::array<Integrator, 5> kIntegrators = {Integrator::Leapfrog,
 inline constexpr std::array<Integrator, 3> kConstraintIntegrators = {
     Integrator::VariationalImplicitEuler, Integrator::ProjectiveDynamics, Integrator::Mixed};
 inline constexpr std::array<Integrator, 1> kStaticIntegrators = {Integrator::Newton};
-// The default: Leapfrog for a step in time, the static Newton solver for a
-// run() to equilibrium where it is safe (Solver::run says when).
-inline constexpr Integrator kAutoIntegrator = Integrator::Auto;
 // "leapfrog", "symplectic_euler", "velocity_verlet", "midpoint", "rk4",
 // "vie", "projective", "mixed", "newton", "auto".
 const char* integrator_name(Integrator i);
@@ -101,8 +100,7 @@ struct SolverSettings {
   // Switchable between steps. Kinetic damping works with all: Leapfrog and
   // Symplectic Euler (the same kick-drift recurrence) move back to Barnes'
   // interpolated peak (eq. 3.29-3.31); the others stay at the step's start
-  // (the discrete peak). Velocities are zeroed. Auto, the default:
-  // kAutoIntegrator.
+  // (the discrete peak). Velocities are zeroed.
   Integrator integrator = Integrator::Auto;
   MassMode mass_mode = MassMode::Fictitious;
   // Constraint-based solvers: local-global iterations per step, and their

@@ -1,4 +1,4 @@
-// The default integrator "auto" (solver.hpp, kAutoIntegrator): a run() to
+// The default integrator "auto" (solver.hpp, Solver::RunScope): a run() to
 // equilibrium of a model the Newton solver takes, with fictitious masses
 // and kinetic damping, is Newton's and ends where Newton alone ends; a step
 // in time, a run of a model Newton refuses and a run of dynamics are
