@@ -149,6 +149,7 @@ void build_cst_membrane(Model& m, int s) {
 struct Case {
   const char* name;
   void (*build)(Model&, int);
+  const char* label = "";  // its name in --cases
 };
 
 struct Measurement {
@@ -229,11 +230,12 @@ Measurement measure(const Case& c, std::size_t requested, double target_seconds,
 
 int usage(const char* argv0, int code) {
   std::fprintf(code ? stderr : stdout,
-               "usage: %s [--sizes 10K,100K,1M] [--seconds S] [--threads 1,2] [--bound-only]\n"
+               "usage: %s [--sizes 10K,100K,1M] [--seconds S] [--threads 1,2] [--bound-only] [--cases NAMES]\n"
                "  --sizes    particle counts (K/M suffixes; each becomes the nearest square grid)\n"
                "  --seconds  target duration of each timed run (default 1.5)\n"
                "  --threads  thread counts of the memory-bound table (default 1,2)\n"
-               "  --bound-only  the memory-bound table alone\n",
+               "  --bound-only  the memory-bound table alone\n"
+               "  --cases    only the case table, for these cases (e.g. beam6,cst: bar, beam, beam6, cst)\n",
                argv0);
   return code;
 }
@@ -246,6 +248,7 @@ int main(int argc, char** argv) {
   double target_seconds = 1.5;
   std::vector<std::size_t> thread_counts{1, 2};
   bool bound_only = false;
+  std::vector<std::string> only_cases;  // --cases: the case table alone, for these
   try {
     for (int i = 1; i < argc; ++i) {
       std::string a = argv[i];
@@ -256,6 +259,7 @@ int main(int argc, char** argv) {
       if (a == "--sizes") sizes = parse_sizes(value());
       else if (a == "--seconds") target_seconds = std::stod(value());
       else if (a == "--bound-only") bound_only = true;
+      else if (a == "--cases") only_cases = split(value());
       else if (a == "--threads") {
         thread_counts = parse_sizes(value());
         for (std::size_t t : thread_counts)
@@ -269,8 +273,20 @@ int main(int argc, char** argv) {
     return usage(argv[0], 2);
   }
 
-  const Case cases[] = {{"bar net", build_bar_net}, {"beam grid", build_beam_grid},
-                        {"beam6 grid", build_beam6_grid}, {"cst membrane", build_cst_membrane}};
+  const std::vector<Case> all_cases{{"bar net", build_bar_net, "bar"},
+                                    {"beam grid", build_beam_grid, "beam"},
+                                    {"beam6 grid", build_beam6_grid, "beam6"},
+                                    {"cst membrane", build_cst_membrane, "cst"}};
+  std::vector<Case> cases;
+  for (const std::string& label : only_cases) {
+    auto it = std::find_if(all_cases.begin(), all_cases.end(), [&](const Case& c) { return label == c.label; });
+    if (it == all_cases.end()) {
+      std::fprintf(stderr, "bench_throughput: unknown case '%s'\n", label.c_str());
+      return usage(argv[0], 2);
+    }
+    cases.push_back(*it);
+  }
+  if (only_cases.empty()) cases = all_cases;
   std::puts("bench_throughput: Solver::step(), Leapfrog + kinetic damping");
   std::puts("  bar net   : s x s planar quad grid patch (add_quad_grid), bars EA=1e5 N, prestress 1e3 N;");
   std::puts("              boundary locked, 1 N out-of-plane load on every interior particle");
@@ -288,42 +304,44 @@ int main(int argc, char** argv) {
 #endif
   );
 
-  // The bar net against the memory bound: triad bandwidth, bytes per
-  // particle-iteration, the bound they imply and the share of it reached,
-  // with every thread count, wall time (the threads' work included).
-  std::printf("bar net against the memory bound (issue 18), wall time; load average %.2f at the start\n", load_average());
-  std::puts("  triad = STREAM a = b + s c, best of 10, GB/s; B/p-it = Solver::fused_step_bytes() / particles;");
-  std::puts("  bound = triad / (B/p-it); fraction = measured / bound; speed-up = this row / its 1-thread row;");
-  std::puts("  cpu M p-it/s = over the thread's CPU time (1 thread: what a loaded machine's time-slicing leaves out)");
-  std::vector<double> triad(thread_counts.size());
-  for (std::size_t t = 0; t < thread_counts.size(); ++t) triad[t] = triad_gbs(unsigned(thread_counts[t]));
-  Table bound({"particles", "threads", "triad GB/s", "B/p-it", "bound M p-it/s", "M p-it/s", "fraction", "speed-up",
-               "cpu M p-it/s"});
   std::string failure;
-  for (std::size_t n : sizes) {
-    double single = 0;
-    for (std::size_t t = 0; t < thread_counts.size(); ++t) {
-      const Measurement r = measure(Case{"bar net", build_bar_net}, n, target_seconds, int(thread_counts[t]));
-      const double pit = double(r.particles) * double(r.steps) / r.wall_seconds;
-      const double bytes = r.step_bytes / double(r.particles);
-      const double limit = triad[t] * 1e9 / bytes;
-      if (t == 0) single = pit;
-      bound.add({fmt("%zu", r.particles), fmt("%zu", thread_counts[t]), fmt("%.1f", triad[t]), fmt("%.0f", bytes),
-                 fmt("%.1f", limit / 1e6), fmt("%.1f", pit / 1e6), fmt("%.0f %%", 100 * pit / limit),
-                 fmt("%.2f", pit / single),
-                 thread_counts[t] == 1 ? fmt("%.1f", double(r.particles) * double(r.steps) / r.seconds / 1e6) : "-"});
-      if (!r.check.empty() && failure.empty()) failure = fmt("bar net %zu threads %zu: ", r.particles, thread_counts[t]) + r.check;
+  if (only_cases.empty()) {  // --cases: the case table alone
+    // The bar net against the memory bound: triad bandwidth, bytes per
+    // particle-iteration, the bound they imply and the share of it reached,
+    // with every thread count, wall time (the threads' work included).
+    std::printf("bar net against the memory bound (issue 18), wall time; load average %.2f at the start\n", load_average());
+    std::puts("  triad = STREAM a = b + s c, best of 10, GB/s; B/p-it = Solver::fused_step_bytes() / particles;");
+    std::puts("  bound = triad / (B/p-it); fraction = measured / bound; speed-up = this row / its 1-thread row;");
+    std::puts("  cpu M p-it/s = over the thread's CPU time (1 thread: what a loaded machine's time-slicing leaves out)");
+    std::vector<double> triad(thread_counts.size());
+    for (std::size_t t = 0; t < thread_counts.size(); ++t) triad[t] = triad_gbs(unsigned(thread_counts[t]));
+    Table bound({"particles", "threads", "triad GB/s", "B/p-it", "bound M p-it/s", "M p-it/s", "fraction", "speed-up",
+                 "cpu M p-it/s"});
+    for (std::size_t n : sizes) {
+      double single = 0;
+      for (std::size_t t = 0; t < thread_counts.size(); ++t) {
+        const Measurement r = measure(Case{"bar net", build_bar_net}, n, target_seconds, int(thread_counts[t]));
+        const double pit = double(r.particles) * double(r.steps) / r.wall_seconds;
+        const double bytes = r.step_bytes / double(r.particles);
+        const double limit = triad[t] * 1e9 / bytes;
+        if (t == 0) single = pit;
+        bound.add({fmt("%zu", r.particles), fmt("%zu", thread_counts[t]), fmt("%.1f", triad[t]), fmt("%.0f", bytes),
+                   fmt("%.1f", limit / 1e6), fmt("%.1f", pit / 1e6), fmt("%.0f %%", 100 * pit / limit),
+                   fmt("%.2f", pit / single),
+                   thread_counts[t] == 1 ? fmt("%.1f", double(r.particles) * double(r.steps) / r.seconds / 1e6) : "-"});
+        if (!r.check.empty() && failure.empty()) failure = fmt("bar net %zu threads %zu: ", r.particles, thread_counts[t]) + r.check;
+      }
     }
-  }
-  bound.print();
-  std::printf("load average %.2f at the end\n", load_average());
-  if (bound_only) {
-    if (!failure.empty()) {
-      std::printf("check: FAILED (%s)\n", failure.c_str());
-      return 1;
+    bound.print();
+    std::printf("load average %.2f at the end\n", load_average());
+    if (bound_only) {
+      if (!failure.empty()) {
+        std::printf("check: FAILED (%s)\n", failure.c_str());
+        return 1;
+      }
+      std::puts("check: ok");
+      return 0;
     }
-    std::puts("check: ok");
-    return 0;
   }
   std::puts("\none thread, thread CPU time:");
 
@@ -346,6 +364,14 @@ int main(int argc, char** argv) {
       if (!r.check.empty() && failure.empty()) failure = std::string(c.name) + " " + fmt("%zu", r.particles) + ": " + r.check;
     }
   table.print();
+  if (!only_cases.empty()) {
+    if (!failure.empty()) {
+      std::printf("check: FAILED (%s)\n", failure.c_str());
+      return 1;
+    }
+    std::puts("check: ok");
+    return 0;
+  }
 
   // Multi-resolution: the bar net with 0, 50, 90 and 99 % of its rows
   // passive; ratio = active p-it/s over the fully active net's at that size.
