@@ -42,6 +42,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "physics/cst_plan.hpp"
 #include "physics/simd_clones.hpp"
 #include "physics/solver.hpp"
 
@@ -146,38 +147,29 @@ TENDRIL_SIMD_CLONES void cst_block(CstBlock& t, std::uint32_t n, double gf) {
 
 void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
   const double gf = settings.geometric_factor;
-  const std::size_t capacity = model_.particles.capacity();
-  if (cst_pull_.size() != capacity) {  // grows with the particles, never per step
-    cst_pull_.assign(capacity, Vec3::Zero());
-    cst_normal_.assign(capacity, Vec3::Zero());
-    cst_smooth_.assign(capacity, Vec3::Zero());
-  }
-  // The corners of the triangles projected below, once each, and how many of
-  // those triangles each has (0, 1, or 2 for more): scratch of this thread,
-  // empty and zero between calls (whatever the solver), grown never per step.
-  thread_local std::vector<ParticleId> corners;
-  thread_local std::vector<std::uint8_t> seen;
-  for (const ParticleId p : corners) seen[p] = 0;  // left by a call cut short
-  corners.clear();
-  if (seen.size() < capacity) seen.resize(capacity, 0);
-  bool gathered = false;
+  if (!cst_plan_.current(model_)) cst_plan_.derive(model_);
+  const CstPlan& plan = cst_plan_;
+  // The projected corners' sums, one per slot: zero between calls (every
+  // slot is cleared after its projection below).
+  if (cst_corner_sums_.size() != plan.corner.size()) cst_corner_sums_.assign(plan.corner.size(), CstCornerSums{});
+  CstCornerSums* sums = cst_corner_sums_.data();
   const Cst* csts = model_.csts.awake_begin();  // awake only
   const std::uint32_t n_csts = std::uint32_t(model_.csts.awake_end() - csts);
+  const ParticleId *ti = plan.i.data(), *tj = plan.j.data(), *tk = plan.k.data();
   CstBlock tb;
+  static_assert(kCstBlock == 64, "CstPlan::block counts blocks of 64");
   for (std::uint32_t e0 = 0; e0 < n_csts; e0 += kCstBlock) {
     const std::uint32_t n = std::min(kCstBlock, n_csts - e0);
-    bool analysis = false;
     for (std::uint32_t m = 0; m < n; ++m) {
-      const Cst& t = csts[e0 + m];
-      const Membrane& mb = t.membrane;
-      const Vec3 a = x[t.j] - x[t.i], b = x[t.k] - x[t.i], side3 = x[t.k] - x[t.j];
+      const std::uint32_t e = e0 + m;
+      const Vec3 xi = x[ti[e]], xj = x[tj[e]], xk = x[tk[e]];
+      const Vec3 a = xj - xi, b = xk - xi, side3 = xk - xj;
       tb.ax[m] = a.x(), tb.ay[m] = a.y(), tb.az[m] = a.z();
       tb.bx[m] = b.x(), tb.by[m] = b.y(), tb.bz[m] = b.z();
       tb.cx[m] = side3.x(), tb.cy[m] = side3.y(), tb.cz[m] = side3.z();
-      tb.sigma_warp[m] = mb.sigma_warp, tb.sigma_weft[m] = mb.sigma_weft;
-      analysis |= mb.mode == Membrane::Analysis;
+      tb.sigma_warp[m] = plan.sigma_warp[e], tb.sigma_weft[m] = plan.sigma_weft[e];
     }
-    if (analysis) {
+    if (plan.block_analysis[e0 / kCstBlock]) {
       for (std::uint32_t m = 0; m < n; ++m) {
         const Cst& t = csts[e0 + m];
         const Membrane& mb = t.membrane;
@@ -190,34 +182,29 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
       cst_block<false>(tb, n, gf);
     }
     for (std::uint32_t m = 0; m < n; ++m) {
-      const Cst& t = csts[e0 + m];
-      const Membrane& mb = t.membrane;
-      const std::uint8_t along_normal = mb.mode == Membrane::Analysis ? 0 : t.interior;
-      if (mb.mode == Membrane::FormFinding && t.interior)  // its corners are projected below
-        for (const ParticleId p : {t.i, t.j, t.k}) {
-          if (seen[p] == 0) corners.push_back(p);
-          seen[p] = seen[p] == 0 ? 1 : 2;
-        }
+      const std::uint32_t e = e0 + m;
+      const ParticleId i = ti[e], j = tj[e], k = tk[e];
+      const std::uint8_t along_normal = plan.along_normal[e];
+      const std::uint32_t* slot = plan.slot.data() + 3 * e;
       if (along_normal) {  // the G-strings: side 1 (i -> j) warp, side 2 (j -> k) weft
         auto g_string = [&](ParticleId u, int cu, ParticleId v, int cv, const Vec3& uv, double q) TENDRIL_INLINE {
           if (along_normal >> cu & 1) {
-            cst_smooth_[u] += q * uv;
+            sums[slot[cu]].smooth += q * uv;
             S[u] += q;
           }
           if (along_normal >> cv & 1) {
-            cst_smooth_[v] -= q * uv;
+            sums[slot[cv]].smooth -= q * uv;
             S[v] += q;
           }
         };
-        const double q = 0.5 * (mb.sigma_warp + mb.sigma_weft);
-        g_string(t.i, 0, t.j, 1, Vec3(tb.ax[m], tb.ay[m], tb.az[m]), q);
-        g_string(t.j, 1, t.k, 2, Vec3(tb.cx[m], tb.cy[m], tb.cz[m]), q);
-        gathered = true;
+        const double q = plan.g_string[e];
+        g_string(i, 0, j, 1, Vec3(tb.ax[m], tb.ay[m], tb.az[m]), q);
+        g_string(j, 1, k, 2, Vec3(tb.cx[m], tb.cy[m], tb.cz[m]), q);
       }
       if (tb.flat[m] != 0) {  // no plane: no force, the elastic stiffness only
-        S[t.i] += tb.ei[m];
-        S[t.j] += tb.ej[m];
-        S[t.k] += tb.ek[m];
+        S[i] += tb.ei[m];
+        S[j] += tb.ej[m];
+        S[k] += tb.ek[m];
         continue;
       }
       const Vec3 nrm(tb.nx[m], tb.ny[m], tb.nz[m]);
@@ -226,35 +213,33 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
           F[p] += f;
           return;
         }
-        cst_pull_[p] += f;  // projected below, once all its triangles are in
-        cst_normal_[p] += cst_normal_[p].dot(nrm) < 0 ? Vec3(-nrm) : nrm;
-        gathered = true;
+        CstCornerSums& c = sums[slot[corner]];
+        c.pull += f;  // projected below, once all its triangles are in
+        c.normal += c.normal.dot(nrm) < 0 ? Vec3(-nrm) : nrm;
       };
-      add(t.i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]));
-      add(t.j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]));
-      add(t.k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]));
-      S[t.i] += tb.si[m];
-      S[t.j] += tb.sj[m];
-      S[t.k] += tb.sk[m];
+      add(i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]));
+      add(j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]));
+      add(k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]));
+      S[i] += tb.si[m];
+      S[j] += tb.sj[m];
+      S[k] += tb.sk[m];
     }
   }
-  if (!gathered) return;
   // The corners of every projected triangle, once each: its G-strings, and
   // the part of its pull along its normal. A corner in more than one such
   // triangle then adds +0 (in the model's order of triangles it was visited
   // once per triangle, the later visits adding zeros: -0 + 0 is +0).
-  for (const ParticleId p : corners) {
-    const Vec3 normal = cst_normal_[p], smooth = cst_smooth_[p];
+  const std::uint32_t n_slots = std::uint32_t(plan.corner.size());
+  for (std::uint32_t s = 0; s < n_slots; ++s) {
+    const ParticleId p = plan.corner[s];
+    CstCornerSums& c = sums[s];
+    const Vec3 normal = c.normal, smooth = c.smooth;
     const double nn = normal.squaredNorm();
     F[p] += smooth;
-    if (nn > 0) F[p] += ((cst_pull_[p] - smooth).dot(normal) / nn) * normal;
-    if (seen[p] > 1) F[p] += Vec3::Zero();
-    cst_pull_[p].setZero();
-    cst_normal_[p].setZero();
-    cst_smooth_[p].setZero();
-    seen[p] = 0;
+    if (nn > 0) F[p] += ((c.pull - smooth).dot(normal) / nn) * normal;
+    if (plan.shared[s]) F[p] += Vec3::Zero();
+    c = CstCornerSums{};
   }
-  corners.clear();
 }
 
 }  // namespace tendril

@@ -24,6 +24,7 @@
 
 #include "model/model.hpp"
 #include "physics/bar_chunks.hpp"
+#include "physics/cst_plan.hpp"
 #include "physics/run_verdict.hpp"
 #include "physics/workers.hpp"
 
@@ -371,9 +372,10 @@ class Solver {
   std::vector<Vec3> Ts_, ws_;       // stage torques, angular velocities
   std::vector<double> Ks_;          // stage rotational stiffnesses (unused but written)
   std::vector<Vec3> sum_r_, sum_w_;  // RK4's sums of L_R and K_R (eq. 3.22-3.24)
-  // cst_forces.cpp: the form-finding pull on interior patch vertices and
-  // their normals, gathered before projection (scratch, zero between calls).
-  mutable std::vector<Vec3> cst_pull_, cst_normal_, cst_smooth_;
+  // cst_forces.cpp: the triangles as the step reads them, and the sums of
+  // the projected corners, one per slot (scratch, zero between calls).
+  mutable CstPlan cst_plan_;
+  mutable std::vector<CstCornerSums> cst_corner_sums_;
   // The oriented quads of every patch under pressure, with their pressure,
   // derived again when the model's revision moves.
   struct PressureQuad {
