@@ -27,6 +27,14 @@ namespace tendril {
 namespace {
 // Eq. 3.17: the frame q turned by the rotation vector r (global axes).
 inline Quat turned(const Vec3& r, const Quat& q) { return Quat(rotation_of(r) * q).normalized(); }
+
+// A particle's physical mass as the step uses it: 1 kg for a massless
+// particle locked on every axis (it does not move), else its mass (0 or less
+// is refused by the caller, as prepare_masses does).
+inline double physical_mass(double point, double lumped, const Vec3& free) {
+  const double m = point + lumped;
+  return m > 0 || !free.isZero() ? m : 1.0;
+}
 }  // namespace
 
 // Leapfrog (eq. 3.11-3.12, with eq. 3.26) and Symplectic Euler are the same
@@ -35,7 +43,8 @@ inline Quat turned(const Vec3& r, const Quat& q) { return Quat(rotation_of(r) * 
 // the first kick from velocities at the step's time (at rest, or left by a
 // synchronous integrator): Leapfrog is not self-starting and kicks half a
 // step, Symplectic Euler kicks a whole one.
-void Solver::integrate_leapfrog() { kick_drift(half_step_); }
+// (Mixed's Leapfrog phase: the masses were prepared.)
+void Solver::integrate_leapfrog() { kick_drift(half_step_, false); }
 
 // v' = keep v + first B dt / M F: eq. 3.11 (first = 1/2 for Leapfrog's
 // start), with eq. 3.26's A and B when viscous.
@@ -55,9 +64,106 @@ double Solver::peak_fraction(double ke) const {
   const double G = ke_prev2_ - ke_prev_, H = ke_prev_ - ke;
   return H - G != 0 ? H / (H - G) : 0.0;
 }
-void Solver::integrate_symplectic_euler() { kick_drift(true); }
 
-void Solver::kick_drift(bool whole_kick) {
+// `prepare`: the masses of eq. 3.4 (or the physical ones) found in the
+// kick's pass, as fused_kick_drift does for bars alone, each particle's
+// force, stiffness and mass checked and used while in the cache; the
+// arithmetic of prepare_masses then the kick. A force or mass the step
+// cannot use is found after some velocities were kicked: they are reset,
+// prepare_masses names the particle at fault, and no particle was moved.
+namespace {
+
+// One kind of motion's kick (translation: v, F, S, M over the integrated
+// particles; rotation: w, T, K, I over the rotating ones), every pointer a
+// local and the free axes of a lock looked up.
+struct KickPass {
+  const ParticleId* ids;
+  std::uint32_t n;
+  const std::uint8_t* active;  // rotation: only active particles turn; translation: null
+  const std::uint8_t* lock;
+  int lock_shift;  // 0: translation's lock bits, 3: rotation's
+  const Vec3* F;   // force or torque
+  const double* S;  // stiffness (fictitious masses)
+  const double *point_mass, *lumped_mass;  // physical: the mass's parts (rotation: the inertia and null)
+  double* mass;                            // the mass used, written when prepared
+  Vec3* v;
+  double mass_scale, keep, first_B_dt;  // first_B_dt = first * B * dt
+};
+struct KickTotals {
+  double ke = 0, momentum2 = 0, residual2 = 0;
+  bool bad = false;
+};
+
+// kPrepare: each mass found as prepare_masses finds it (eq. 3.4, or the
+// physical one: 1 for a massless particle locked on every axis) and its
+// force, stiffness and mass checked; else the masses are read.
+template <bool kPrepare, bool kPhysical>
+KickTotals kick_pass(const KickPass& a, KickTotals t) {
+  static const Vec3 free_of[8] = {free_axes(0), free_axes(1), free_axes(2), free_axes(3),
+                                  free_axes(4), free_axes(5), free_axes(6), free_axes(7)};
+  const ParticleId* __restrict ids = a.ids;
+  const std::uint8_t* __restrict active = a.active;
+  const std::uint8_t* __restrict lock = a.lock;
+  const Vec3* __restrict F = a.F;
+  const double* __restrict S = a.S;
+  const double* point_mass = a.point_mass;
+  const double* __restrict lumped_mass = a.lumped_mass;
+  double* mass = a.mass;
+  Vec3* __restrict v = a.v;
+  const double mass_scale = a.mass_scale, keep = a.keep, first_B_dt = a.first_B_dt;
+  const int shift = a.lock_shift;
+  for (std::uint32_t n = 0; n < a.n; ++n) {
+    const ParticleId p = ids[n];
+    if (active && !active[p]) continue;
+    const std::uint8_t locked = (lock[p] >> shift) & kLockTranslation;
+    const Vec3 f = F[p];
+    double M;
+    if constexpr (kPrepare) {
+      const double s = S[p];
+      if constexpr (kPhysical) {
+        const double m = lumped_mass ? point_mass[p] + lumped_mass[p] : point_mass[p];
+        M = m > 0 || locked != kLockTranslation ? m : 1.0;
+      } else {
+        M = mass_scale * s;
+      }
+      // Every term finite: x - x is 0 for a finite x, NaN otherwise.
+      const double finite = (f.x() - f.x()) + (f.y() - f.y()) + (f.z() - f.z()) + (s - s);
+      if (!(finite == 0) || !(M > 0)) [[unlikely]] {
+        t.bad = true;
+        continue;
+      }
+      mass[p] = M;
+      t.residual2 = std::max(t.residual2, locked == 0 ? f.squaredNorm() : f.cwiseProduct(free_of[locked]).squaredNorm());
+    } else {
+      M = mass[p];
+    }
+    Vec3 vn = keep * v[p] + (first_B_dt / M) * f;  // eq. 3.11 / 3.26, 3.21 / 3.27
+    if (locked != 0) vn = vn.cwiseProduct(free_of[locked]);  // free on every axis: times 1 changes nothing
+    v[p] = vn;
+    const double v2 = vn.squaredNorm();
+    t.ke += M * v2;  // eq. 3.28
+    t.momentum2 = std::max(t.momentum2, M * M * v2);
+  }
+  return t;
+}
+
+// The kinetic energy goes on from `so_far` (rotation after translation, as
+// one sum); the largest terms are kept apart.
+KickTotals kick_pass(const KickPass& a, bool prepare, bool physical, double so_far) {
+  const KickTotals start{so_far, 0, 0, false};
+  if (!prepare) return kick_pass<false, false>(a, start);
+  return physical ? kick_pass<true, true>(a, start) : kick_pass<true, false>(a, start);
+}
+
+}  // namespace
+
+// `prepare`: the masses of eq. 3.4 (or the physical ones) found in the
+// kick's pass, as fused_kick_drift does for bars alone, each particle's
+// force, stiffness and mass checked and used while in the cache; the
+// arithmetic of prepare_masses then the kick. A force or mass the step
+// cannot use is found after some velocities were kicked: they are reset,
+// prepare_masses names the particle at fault, and no particle was moved.
+void Solver::kick_drift(bool whole_kick, bool prepare) {
   Particles& P = model_.particles;
   const std::uint8_t* active = P.active.data();
   const std::uint8_t* lock = P.lock.data();
@@ -65,27 +171,45 @@ void Solver::kick_drift(bool whole_kick) {
   const double dt = settings.dt;
   const Kick kick_factors = kick(whole_kick);
   const double first = kick_factors.first, keep = kick_factors.keep, B = kick_factors.B;
-  double momentum2 = 0, ke = 0;
+  const bool physical = settings.mass_mode == MassMode::Physical;
+  const double mass_scale =
+      settings.mass_factor * fictitious_mass_scale(settings.integrator) * 0.5 * settings.dt * settings.dt;  // eq. 3.4
   Vec3* v = P.velocity.data();
   const Vec3* F = P.force.data();
   const double* mass = mass_.data();
-  for (ParticleId p : integrated) {
-    const double M = mass[p];
-    v[p] = (keep * v[p] + (first * B * dt / M) * F[p]).cwiseProduct(free_axes(lock[p]));  // eq. 3.11 / 3.26
-    ke += M * v[p].squaredNorm();                                                        // eq. 3.28
-    momentum2 = std::max(momentum2, M * M * v[p].squaredNorm());
-  }
+  const KickTotals moved = kick_pass({integrated.data(), std::uint32_t(integrated.size()), nullptr, lock, 0, F,
+                                      P.stiffness.data(), P.point_mass.data(), P.lumped_mass.data(), mass_.data(), v,
+                                      mass_scale, keep, first * B * dt},
+                                     prepare, physical, 0.0);
   const std::vector<ParticleId>& rotating = P.rotational.raw();
   Vec3* w = P.angular_velocity.data();
   const Vec3* T = P.torque.data();
   const double* inertia = inertia_.data();
-  for (ParticleId p : rotating) {
-    if (!active[p]) continue;
-    const double I = inertia[p];
-    w[p] = (keep * w[p] + (first * B * dt / I) * T[p]).cwiseProduct(free_rotation_axes(lock[p]));  // eq. 3.21 / 3.27
-    ke += I * w[p].squaredNorm();                                                                // eq. 3.28
-    momentum2 = std::max(momentum2, I * I * w[p].squaredNorm());
+  if (prepare && physical && !rotating.empty()) {
+    // A half element of line mass mu and length L turning about its node:
+    // mu L^3 / 24, the same about every axis (isotropic, thesis 3.2.4.2).
+    for (ParticleId p : rotating) inertia_[p] = 0;
+    for (const Beam6* b = model_.beam6s.awake_begin(); b != model_.beam6s.awake_end(); ++b) {
+      const double I = b->line_mass * b->rest_length * b->rest_length * b->rest_length / 24;
+      inertia_[b->i] += I;
+      inertia_[b->j] += I;
+    }
   }
+  const KickTotals rotated = kick_pass({rotating.data(), std::uint32_t(rotating.size()), active, lock, 3, T,
+                                        P.rot_stiffness.data(), inertia_.data(), nullptr, inertia_.data(), w,
+                                       mass_scale, keep, first * B * dt},
+                                      prepare, physical, moved.ke);
+  if (moved.bad || rotated.bad) [[unlikely]] {
+    reset_motion();
+    prepare_masses();  // throws, naming the first particle at fault
+    throw NumericalError("solver: a force or mass is not usable at step " + std::to_string(steps_) +
+                         "; velocities were reset, no particle was moved");
+  }
+  if (prepare) {
+    torque_residual_ = std::sqrt(rotated.residual2);
+    residual_ = std::max(std::sqrt(moved.residual2), torque_residual_);
+  }
+  const double ke = rotated.ke, momentum2 = std::max(moved.momentum2, rotated.momentum2);
   if (!std::isfinite(ke)) [[unlikely]] {  // beyond the stability limit: the kick overflowed
     const NumericalError e =
         non_finite_motion(model_, nullptr, v, w, settings, steps_, "velocities were reset, no particle was moved");
@@ -135,14 +259,6 @@ struct KickSums {
   double ke = 0, momentum2 = 0, residual2 = 0;
   bool bad = false;
 };
-
-// A particle's physical mass as the step uses it: 1 kg for a massless
-// particle locked on every axis (it does not move), else its mass (0 or less
-// is refused by the caller, as prepare_masses does).
-inline double physical_mass(double point, double lumped, const Vec3& free) {
-  const double m = point + lumped;
-  return m > 0 || !free.isZero() ? m : 1.0;
-}
 
 template <bool kPhysical, bool kDrift>
 KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, std::uint32_t end, const KickArgs& a,

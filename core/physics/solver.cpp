@@ -166,11 +166,14 @@ void Solver::take_step() {
     return;
   }
   compute_forces();
-  prepare_masses();
+  // Leapfrog's and Symplectic Euler's kick finds the masses in its own pass.
+  const bool kick_prepares =
+      settings.integrator == Integrator::Leapfrog || settings.integrator == Integrator::SymplecticEuler;
+  if (!kick_prepares) prepare_masses();
   if (settings.integrator != Integrator::Mixed) mixed_implicit_ = false, mixed_peak_ = 0;
   switch (settings.integrator) {
-    case Integrator::Leapfrog: integrate_leapfrog(); break;
-    case Integrator::SymplecticEuler: integrate_symplectic_euler(); break;
+    case Integrator::Leapfrog: kick_drift(half_step_, kick_prepares); break;
+    case Integrator::SymplecticEuler: kick_drift(true, kick_prepares); break;
     case Integrator::VelocityVerlet: integrate_velocity_verlet(); break;
     case Integrator::Midpoint: integrate_midpoint(); break;
     case Integrator::RK4: integrate_rk4(); break;

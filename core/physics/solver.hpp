@@ -308,8 +308,9 @@ class Solver {
   double viscous_rate() const;  // c * dt = C when viscous, else 0
   // integrators.cpp
   void integrate_leapfrog();
-  void integrate_symplectic_euler();
-  void kick_drift(bool whole_kick);  // both; Leapfrog's first kick from v(t) is half a step
+  // Both; Leapfrog's first kick from v(t) is half a step. `prepare`: the
+  // masses of prepare_masses found in the kick's pass (take_step skips it).
+  void kick_drift(bool whole_kick, bool prepare);
   struct Kick {
     double first, keep, B;
   };
