@@ -108,62 +108,63 @@ TENDRIL_SIMD_CLONES void hinge_block(HingeBlock& h, std::uint32_t n) {
   }
 }
 
-// 6-DOF beams the same way (eq. 3.44-3.50): each end's frame q * end
-// composed while gathering (Eigen's quaternion product, as beam6_ends), the
-// chord, then one vectorised loop for the rotation matrices, the element
-// frame, the included angles, the end moments, the forces and the direct
-// stiffnesses, then the scatter in the model's order. Term for term the
-// arithmetic of beam6_ends (element_forces.hpp): Eigen's toRotationMatrix,
-// norm, dot and cross written out in their order. An element the loop
-// cannot finish (no length, or ends whose mean z lies along the chord, where
-// element_frame takes another axis) is marked and evaluated again by
-// beam6_ends in the scatter.
+// 6-DOF beams the same way (eq. 3.44-3.50): the chord, both nodes' frames
+// and beam-end orientations and the element's constants (Beam6Plan)
+// gathered, then one vectorised loop for each end's frame q * end (Eigen's
+// SSE2 quaternion product, as beam6_ends computes it), the rotation
+// matrices, the element frame, the included angles, the end moments, the
+// forces and the direct stiffnesses, then the scatter in the model's order.
+// Term for term the arithmetic of beam6_ends (element_forces.hpp): Eigen's
+// quaternion product, toRotationMatrix, norm, dot and cross written out in
+// their order. An element the loop cannot finish (no length, or ends whose
+// mean z lies along the chord, where element_frame takes another axis) is
+// marked and evaluated again by beam6_ends in the scatter.
 constexpr std::uint32_t kBeam6Block = 64;
 
 struct Beam6Block {
   alignas(64) double dx[kBeam6Block], dy[kBeam6Block], dz[kBeam6Block];
-  alignas(64) double ax[kBeam6Block], ay[kBeam6Block], az[kBeam6Block], aw[kBeam6Block];  // q[i] * end_i
-  alignas(64) double bx[kBeam6Block], by[kBeam6Block], bz[kBeam6Block], bw[kBeam6Block];  // q[j] * end_j
-  alignas(64) double L[kBeam6Block], EA[kBeam6Block], EIy[kBeam6Block], EIz[kBeam6Block], GJ[kBeam6Block];
-  alignas(64) double pre[kBeam6Block];
+  alignas(64) double qix[kBeam6Block], qiy[kBeam6Block], qiz[kBeam6Block], qiw[kBeam6Block];  // q[i]
+  alignas(64) double eix[kBeam6Block], eiy[kBeam6Block], eiz[kBeam6Block], eiw[kBeam6Block];  // end_i
+  alignas(64) double qjx[kBeam6Block], qjy[kBeam6Block], qjz[kBeam6Block], qjw[kBeam6Block];  // q[j]
+  alignas(64) double ejx[kBeam6Block], ejy[kBeam6Block], ejz[kBeam6Block], ejw[kBeam6Block];  // end_j
+  alignas(64) double L[kBeam6Block], EA[kBeam6Block], pre[kBeam6Block];
+  alignas(64) double k_static[kBeam6Block], kr_static[kBeam6Block], cz[kBeam6Block], cy[kBeam6Block];
+  alignas(64) double torsion[kBeam6Block];
   alignas(64) double k[kBeam6Block], kr[kBeam6Block], fx[kBeam6Block], fy[kBeam6Block], fz[kBeam6Block];
   alignas(64) double tax[kBeam6Block], tay[kBeam6Block], taz[kBeam6Block];
   alignas(64) double tbx[kBeam6Block], tby[kBeam6Block], tbz[kBeam6Block];
   alignas(64) double redo[kBeam6Block];  // 1: beam6_ends takes it (a double: a byte would keep the loop scalar)
 };
 
+// Eigen's quaternion product a * b for doubles with SSE2 (Geometry_SIMD.h's
+// quat_product), then toRotationMatrix of it.
+TENDRIL_INLINE void frame_matrix(double ax, double ay, double az, double aw, double bx, double by, double bz,
+                                 double bw, double (&E)[3][3]) {
+  const double x = (aw * bx + ay * bz) - (az * by - ax * bw);
+  const double y = (aw * by + ay * bw) + (az * bx - ax * bz);
+  const double z = (aw * bz - ay * bx) + (az * bw + ax * by);
+  const double w = (aw * bw - ay * by) - (az * bz + ax * bx);
+  const double tx = 2.0 * x, ty = 2.0 * y, tz = 2.0 * z;
+  const double twx = tx * w, twy = ty * w, twz = tz * w, txx = tx * x, txy = ty * x, txz = tz * x;
+  const double tyy = ty * y, tyz = tz * y, tzz = tz * z;
+  E[0][0] = 1.0 - (tyy + tzz), E[0][1] = txy - twz, E[0][2] = txz + twy;
+  E[1][0] = txy + twz, E[1][1] = 1.0 - (txx + tzz), E[1][2] = tyz - twx;
+  E[2][0] = txz - twy, E[2][1] = tyz + twx, E[2][2] = 1.0 - (txx + tyy);
+}
+
 TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, std::uint32_t n, double gf) {
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
-    const double L = b.L[m], EA = b.EA[m], EIy = b.EIy[m], EIz = b.EIz[m], GJ = b.GJ[m];
+    const double L = b.L[m], EA = b.EA[m];
     const double dx = b.dx[m], dy = b.dy[m], dz = b.dz[m];
     const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
     const double N = b.pre[m] + EA * (l - L) / L;  // eq. 3.32 with K = EA / L
-    const double EI = EIy < EIz ? EIz : EIy;
-    const double k_axial = EA / L, k_bending = kBendingMassFactor * 12 * EI / (L * L * L);
-    b.k[m] = (k_axial < k_bending ? k_bending : k_axial) + (l > 0 && N > 0 ? gf * N / l : 0.0);  // eq. 3.47
-    const double kr_torsion = GJ / L, kr_bending = kBendingMassFactor * 4 * EI / L;
-    b.kr[m] = kr_torsion < kr_bending ? kr_bending : kr_torsion;  // eq. 3.49
-    // Ea, Eb: Eigen's toRotationMatrix of q * end.
+    b.k[m] = b.k_static[m] + (l > 0 && N > 0 ? gf * N / l : 0.0);  // eq. 3.47
+    b.kr[m] = b.kr_static[m];                                       // eq. 3.49
+    // Ea, Eb: the rotation matrices of q[i] * end_i and q[j] * end_j.
     double Ea[3][3], Eb[3][3];
-    {
-      const double x = b.ax[m], y = b.ay[m], z = b.az[m], w = b.aw[m];
-      const double tx = 2.0 * x, ty = 2.0 * y, tz = 2.0 * z;
-      const double twx = tx * w, twy = ty * w, twz = tz * w, txx = tx * x, txy = ty * x, txz = tz * x;
-      const double tyy = ty * y, tyz = tz * y, tzz = tz * z;
-      Ea[0][0] = 1.0 - (tyy + tzz), Ea[0][1] = txy - twz, Ea[0][2] = txz + twy;
-      Ea[1][0] = txy + twz, Ea[1][1] = 1.0 - (txx + tzz), Ea[1][2] = tyz - twx;
-      Ea[2][0] = txz - twy, Ea[2][1] = tyz + twx, Ea[2][2] = 1.0 - (txx + tyy);
-    }
-    {
-      const double x = b.bx[m], y = b.by[m], z = b.bz[m], w = b.bw[m];
-      const double tx = 2.0 * x, ty = 2.0 * y, tz = 2.0 * z;
-      const double twx = tx * w, twy = ty * w, twz = tz * w, txx = tx * x, txy = ty * x, txz = tz * x;
-      const double tyy = ty * y, tyz = tz * y, tzz = tz * z;
-      Eb[0][0] = 1.0 - (tyy + tzz), Eb[0][1] = txy - twz, Eb[0][2] = txz + twy;
-      Eb[1][0] = txy + twz, Eb[1][1] = 1.0 - (txx + tzz), Eb[1][2] = tyz - twx;
-      Eb[2][0] = txz - twy, Eb[2][1] = tyz + twx, Eb[2][2] = 1.0 - (txx + tyy);
-    }
+    frame_matrix(b.qix[m], b.qiy[m], b.qiz[m], b.qiw[m], b.eix[m], b.eiy[m], b.eiz[m], b.eiw[m], Ea);
+    frame_matrix(b.qjx[m], b.qjy[m], b.qjz[m], b.qjw[m], b.ejx[m], b.ejy[m], b.ejz[m], b.ejw[m], Eb);
     const double ux0 = dx / l, ux1 = dy / l, ux2 = dz / l;  // eq. 3.45
     // element_frame: y = (Ea z + Eb z) x ux, normalized; z = ux x y.
     const double s0 = Ea[0][2] + Eb[0][2], s1 = Ea[1][2] + Eb[1][2], s2 = Ea[2][2] + Eb[2][2];
@@ -180,10 +181,10 @@ TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, std::uint32_t n, double gf) 
     const double twist = 0.5 * ((Eb[0][1] * Ea[0][2] + Eb[1][1] * Ea[1][2] + Eb[2][1] * Ea[2][2]) -
                                 (Ea[0][1] * Eb[0][2] + Ea[1][1] * Eb[1][2] + Ea[2][1] * Eb[2][2]));
     // Eq. 3.46.
-    const double cz = 2 * EIz / L, cy = 2 * EIy / L;
+    const double cz = b.cz[m], cy = b.cy[m];
     const double Mza = cz * (2 * za + zb), Mzb = cz * (za + 2 * zb);
     const double Mya = cy * (2 * ya + yb), Myb = cy * (ya + 2 * yb);
-    const double Mx = GJ / L * twist;
+    const double Mx = b.torsion[m] * twist;
     const double ta0 = Mx * ux0 - Mya * uy0 - Mza * uz0, ta1 = Mx * ux1 - Mya * uy1 - Mza * uz1,
                  ta2 = Mx * ux2 - Mya * uy2 - Mza * uz2;
     const double tb0 = -Mx * ux0 - Myb * uy0 - Mzb * uz0, tb1 = -Mx * ux1 - Myb * uy1 - Mzb * uz1,
@@ -413,39 +414,45 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
   const Beam6* beam6s = model_.beam6s.awake_begin();
   const std::uint32_t n_beam6s = std::uint32_t(model_.beam6s.awake_end() - beam6s);
   if (n_beam6s > 0) {
+    if (!beam6_plan_.current(model_)) beam6_plan_.derive(model_);
+    const Beam6Plan& plan = beam6_plan_;
     Beam6Block bb;
     for (std::uint32_t e0 = 0; e0 < n_beam6s; e0 += kBeam6Block) {
       const std::uint32_t n = std::min(kBeam6Block, n_beam6s - e0);
       for (std::uint32_t m = 0; m < n; ++m) {
-        const Beam6& b = beam6s[e0 + m];
-        const Vec3 d = x[b.j] - x[b.i];
-        const Quat qa = q[b.i] * b.end_i, qb = q[b.j] * b.end_j;
+        const std::uint32_t e = e0 + m;
+        const ParticleId i = plan.i[e], j = plan.j[e];
+        const Vec3 d = x[j] - x[i];
+        const Quat &qi = q[i], &qj = q[j], &ei = plan.end_i[e], &ej = plan.end_j[e];
         bb.dx[m] = d.x(), bb.dy[m] = d.y(), bb.dz[m] = d.z();
-        bb.ax[m] = qa.x(), bb.ay[m] = qa.y(), bb.az[m] = qa.z(), bb.aw[m] = qa.w();
-        bb.bx[m] = qb.x(), bb.by[m] = qb.y(), bb.bz[m] = qb.z(), bb.bw[m] = qb.w();
-        bb.L[m] = b.rest_length, bb.EA[m] = b.EA, bb.EIy[m] = b.EIy, bb.EIz[m] = b.EIz, bb.GJ[m] = b.GJ;
-        bb.pre[m] = b.prestress;
+        bb.qix[m] = qi.x(), bb.qiy[m] = qi.y(), bb.qiz[m] = qi.z(), bb.qiw[m] = qi.w();
+        bb.eix[m] = ei.x(), bb.eiy[m] = ei.y(), bb.eiz[m] = ei.z(), bb.eiw[m] = ei.w();
+        bb.qjx[m] = qj.x(), bb.qjy[m] = qj.y(), bb.qjz[m] = qj.z(), bb.qjw[m] = qj.w();
+        bb.ejx[m] = ej.x(), bb.ejy[m] = ej.y(), bb.ejz[m] = ej.z(), bb.ejw[m] = ej.w();
+        bb.L[m] = plan.L[e], bb.EA[m] = plan.EA[e], bb.pre[m] = plan.prestress[e];
+        bb.k_static[m] = plan.k_static[e], bb.kr_static[m] = plan.kr[e];
+        bb.cz[m] = plan.cz[e], bb.cy[m] = plan.cy[e], bb.torsion[m] = plan.torsion[e];
       }
       beam6_block(bb, n, gf);
       for (std::uint32_t m = 0; m < n; ++m) {
-        const Beam6& b = beam6s[e0 + m];
+        const ParticleId i = plan.i[e0 + m], j = plan.j[e0 + m];
         Beam6Ends e;
         if (bb.redo[m] != 0) [[unlikely]] {
-          e = beam6_ends(b, x, q, gf);
+          e = beam6_ends(beam6s[e0 + m], x, q, gf);
         } else {
           e.k = bb.k[m], e.kr = bb.kr[m];
           e.fj = Vec3(bb.fx[m], bb.fy[m], bb.fz[m]);
           e.ta = Vec3(bb.tax[m], bb.tay[m], bb.taz[m]);
           e.tb = Vec3(bb.tbx[m], bb.tby[m], bb.tbz[m]);
         }
-        S[b.i] += e.k;
-        S[b.j] += e.k;
-        K[b.i] += e.kr;
-        K[b.j] += e.kr;
-        F[b.i] -= e.fj;
-        F[b.j] += e.fj;
-        T[b.i] += e.ta;
-        T[b.j] += e.tb;
+        S[i] += e.k;
+        S[j] += e.k;
+        K[i] += e.kr;
+        K[j] += e.kr;
+        F[i] -= e.fj;
+        F[j] += e.fj;
+        T[i] += e.ta;
+        T[j] += e.tb;
       }
     }
   }

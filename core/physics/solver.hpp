@@ -24,6 +24,7 @@
 
 #include "model/model.hpp"
 #include "physics/bar_chunks.hpp"
+#include "physics/beam6_plan.hpp"
 #include "physics/cst_plan.hpp"
 #include "physics/run_verdict.hpp"
 #include "physics/workers.hpp"
@@ -391,6 +392,7 @@ class Solver {
   std::shared_ptr<ProjectiveSystem> projective_;  // projective.hpp, built on first use
   std::shared_ptr<NewtonSystem> newton_;          // newton.hpp, built on first use
   mutable BarChunks bar_chunks_;
+  mutable Beam6Plan beam6_plan_;  // forces.cpp: the 6-DOF elements as the step reads them
   mutable std::vector<Couple> couples_;
   mutable std::pair<std::uint64_t, std::uint64_t> couples_at_{~0ull, ~0ull};  // model revision, moment revision
   std::unique_ptr<Workers> workers_;

@@ -1,0 +1,35 @@
+#pragma once
+// The 6-DOF step's lean copy of the awake Beam6 elements (DESIGN principle
+// 1: a derived cache, like BarChunks): structure of arrays holding what the
+// force reads, with the quotients of constants that eq. 3.46-3.49 divide
+// every step stored once (the same expressions, so the same numbers).
+// Derived again whenever the model's revision or capacity moved.
+#include <cstdint>
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace tendril {
+
+struct Beam6Plan {
+  bool current(const Model& m) const {
+    return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity();
+  }
+  void derive(const Model& m);
+
+  // Per awake element, in the model's order.
+  std::vector<ParticleId> i, j;
+  std::vector<Quat> end_i, end_j;
+  std::vector<double> L, EA, prestress;
+  std::vector<double> k_static;  // max(EA / L, 7/4 12 EI / L^3), eq. 3.47 without the geometric term
+  std::vector<double> kr;        // max(GJ / L, 7/4 4 EI / L), eq. 3.49
+  std::vector<double> cz, cy;    // 2 EIz / L, 2 EIy / L (eq. 3.46)
+  std::vector<double> torsion;   // GJ / L
+
+ private:
+  const Model* model_ = nullptr;
+  std::uint64_t revision_ = ~std::uint64_t(0);
+  std::size_t capacity_ = 0;
+};
+
+}  // namespace tendril
