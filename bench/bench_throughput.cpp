@@ -233,7 +233,8 @@ int usage(const char* argv0, int code) {
                "usage: %s [--sizes 10K,100K,1M] [--seconds S] [--threads 1,2] [--bound-only] [--cases NAMES]\n"
                "  --sizes    particle counts (K/M suffixes; each becomes the nearest square grid)\n"
                "  --seconds  target duration of each timed run (default 1.5)\n"
-               "  --threads  thread counts of the memory-bound table (default 1,2)\n"
+               "  --threads  thread counts of the memory-bound table (default 1,2), and with --cases of a table\n"
+               "             of those cases on threads (wall time)\n"
                "  --bound-only  the memory-bound table alone\n"
                "  --cases    only the case table, for these cases (e.g. beam6,cst: bar, beam, beam6, cst)\n",
                argv0);
@@ -365,6 +366,28 @@ int main(int argc, char** argv) {
     }
   table.print();
   if (!only_cases.empty()) {
+    // The named cases on every thread count of --threads, wall time: the
+    // element loops (hinges, 6-DOF beams, CST) split by particle ownership.
+    if (thread_counts.size() > 1 || (thread_counts.size() == 1 && thread_counts[0] != 1)) {
+      std::printf("\nthe same cases on threads, wall time (load average %.2f); speed-up = this row / 1 thread\n",
+                  load_average());
+      Table threaded({"case", "particles", "threads", "steps", "wall s", "M p-it/s", "speed-up"});
+      for (const Case& c : cases)
+        for (std::size_t n : sizes) {
+          double single = 0;
+          for (std::size_t t : thread_counts) {
+            const Measurement r = measure(c, n, target_seconds, int(t));
+            const double pit = double(r.particles) * double(r.steps) / r.wall_seconds;
+            if (t == 1) single = pit;
+            threaded.add({c.name, fmt("%zu", r.particles), fmt("%zu", t), fmt("%llu", (unsigned long long)r.steps),
+                          fmt("%.2f", r.wall_seconds), fmt("%.1f", pit / 1e6),
+                          single > 0 ? fmt("%.2f", pit / single) : "-"});
+            if (!r.check.empty() && failure.empty())
+              failure = std::string(c.name) + fmt(" %zu threads %zu: ", r.particles, t) + r.check;
+          }
+        }
+      threaded.print();
+    }
     if (!failure.empty()) {
       std::printf("check: FAILED (%s)\n", failure.c_str());
       return 1;

@@ -143,35 +143,31 @@ TENDRIL_SIMD_CLONES void cst_block(CstBlock& t, std::uint32_t n, double gf) {
     t.sk[m] = e2 + g * aa;
   }
 }
-}  // namespace
 
-void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
-  const double gf = settings.geometric_factor;
-  if (!cst_plan_.current(model_)) cst_plan_.derive(model_);
-  const CstPlan& plan = cst_plan_;
-  // The projected corners' sums, one per slot: zero between calls (every
-  // slot is cleared after its projection below).
-  if (cst_corner_sums_.size() != plan.corner.size()) cst_corner_sums_.assign(plan.corner.size(), CstCornerSums{});
-  CstCornerSums* sums = cst_corner_sums_.data();
-  const Cst* csts = model_.csts.awake_begin();  // awake only
-  const std::uint32_t n_csts = std::uint32_t(model_.csts.awake_end() - csts);
+// One thread's triangles: items[0 .. count) (kShared) or 0 .. count, in the
+// model's order, their forces and G-strings added into the particles it
+// owns, the pulls of its projected corners into their slots.
+template <bool kShared>
+void cst_forces(const CstPlan& plan, const Cst* csts, const std::uint32_t* items, std::uint32_t count,
+                Owned<kShared> own, const Vec3* x, double gf, Vec3* F, double* S, CstCornerSums* sums) {
   const ParticleId *ti = plan.i.data(), *tj = plan.j.data(), *tk = plan.k.data();
   CstBlock tb;
-  static_assert(kCstBlock == 64, "CstPlan::block counts blocks of 64");
-  for (std::uint32_t e0 = 0; e0 < n_csts; e0 += kCstBlock) {
-    const std::uint32_t n = std::min(kCstBlock, n_csts - e0);
+  for (std::uint32_t e0 = 0; e0 < count; e0 += kCstBlock) {
+    const std::uint32_t n = std::min(kCstBlock, count - e0);
+    bool analysis = false;
     for (std::uint32_t m = 0; m < n; ++m) {
-      const std::uint32_t e = e0 + m;
+      const std::uint32_t e = kShared ? items[e0 + m] : e0 + m;
       const Vec3 xi = x[ti[e]], xj = x[tj[e]], xk = x[tk[e]];
       const Vec3 a = xj - xi, b = xk - xi, side3 = xk - xj;
       tb.ax[m] = a.x(), tb.ay[m] = a.y(), tb.az[m] = a.z();
       tb.bx[m] = b.x(), tb.by[m] = b.y(), tb.bz[m] = b.z();
       tb.cx[m] = side3.x(), tb.cy[m] = side3.y(), tb.cz[m] = side3.z();
       tb.sigma_warp[m] = plan.sigma_warp[e], tb.sigma_weft[m] = plan.sigma_weft[e];
+      analysis |= plan.analysis[e] != 0;
     }
-    if (plan.block_analysis[e0 / kCstBlock]) {
+    if (analysis) {
       for (std::uint32_t m = 0; m < n; ++m) {
-        const Cst& t = csts[e0 + m];
+        const Cst& t = csts[kShared ? items[e0 + m] : e0 + m];
         const Membrane& mb = t.membrane;
         tb.dxx[m] = mb.dxx, tb.dxy[m] = mb.dxy, tb.dyx[m] = mb.dyx, tb.dyy[m] = mb.dyy, tb.G[m] = mb.G;
         tb.l1[m] = t.ref.l1, tb.h[m] = t.ref.h, tb.c[m] = t.ref.c;
@@ -182,29 +178,31 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
       cst_block<false>(tb, n, gf);
     }
     for (std::uint32_t m = 0; m < n; ++m) {
-      const std::uint32_t e = e0 + m;
+      const std::uint32_t e = kShared ? items[e0 + m] : e0 + m;
       const ParticleId i = ti[e], j = tj[e], k = tk[e];
+      const bool own_i = own(i), own_j = own(j), own_k = own(k);
       const std::uint8_t along_normal = plan.along_normal[e];
       const std::uint32_t* slot = plan.slot.data() + 3 * e;
       if (along_normal) {  // the G-strings: side 1 (i -> j) warp, side 2 (j -> k) weft
-        auto g_string = [&](ParticleId u, int cu, ParticleId v, int cv, const Vec3& uv, double q) TENDRIL_INLINE {
-          if (along_normal >> cu & 1) {
+        auto g_string = [&](ParticleId u, int cu, bool own_u, ParticleId v, int cv, bool own_v, const Vec3& uv,
+                            double q) TENDRIL_INLINE {
+          if ((along_normal >> cu & 1) && own_u) {
             sums[slot[cu]].smooth += q * uv;
             S[u] += q;
           }
-          if (along_normal >> cv & 1) {
+          if ((along_normal >> cv & 1) && own_v) {
             sums[slot[cv]].smooth -= q * uv;
             S[v] += q;
           }
         };
         const double q = plan.g_string[e];
-        g_string(i, 0, j, 1, Vec3(tb.ax[m], tb.ay[m], tb.az[m]), q);
-        g_string(j, 1, k, 2, Vec3(tb.cx[m], tb.cy[m], tb.cz[m]), q);
+        g_string(i, 0, own_i, j, 1, own_j, Vec3(tb.ax[m], tb.ay[m], tb.az[m]), q);
+        g_string(j, 1, own_j, k, 2, own_k, Vec3(tb.cx[m], tb.cy[m], tb.cz[m]), q);
       }
       if (tb.flat[m] != 0) {  // no plane: no force, the elastic stiffness only
-        S[i] += tb.ei[m];
-        S[j] += tb.ej[m];
-        S[k] += tb.ek[m];
+        if (own_i) S[i] += tb.ei[m];
+        if (own_j) S[j] += tb.ej[m];
+        if (own_k) S[k] += tb.ek[m];
         continue;
       }
       const Vec3 nrm(tb.nx[m], tb.ny[m], tb.nz[m]);
@@ -217,21 +215,27 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
         c.pull += f;  // projected below, once all its triangles are in
         c.normal += c.normal.dot(nrm) < 0 ? Vec3(-nrm) : nrm;
       };
-      add(i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]));
-      add(j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]));
-      add(k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]));
-      S[i] += tb.si[m];
-      S[j] += tb.sj[m];
-      S[k] += tb.sk[m];
+      if (own_i) add(i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]));
+      if (own_j) add(j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]));
+      if (own_k) add(k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]));
+      if (own_i) S[i] += tb.si[m];
+      if (own_j) S[j] += tb.sj[m];
+      if (own_k) S[k] += tb.sk[m];
     }
   }
-  // The corners of every projected triangle, once each: its G-strings, and
-  // the part of its pull along its normal. A corner in more than one such
-  // triangle then adds +0 (in the model's order of triangles it was visited
-  // once per triangle, the later visits adding zeros: -0 + 0 is +0).
+}
+
+// The corners of every projected triangle, once each: its G-strings, and
+// the part of its pull along its normal. A corner in more than one such
+// triangle then adds +0 (in the model's order of triangles it was visited
+// once per triangle, the later visits adding zeros: -0 + 0 is +0). Each
+// slot is cleared for the next call.
+template <bool kShared>
+void project_corners(const CstPlan& plan, Owned<kShared> own, Vec3* F, CstCornerSums* sums) {
   const std::uint32_t n_slots = std::uint32_t(plan.corner.size());
   for (std::uint32_t s = 0; s < n_slots; ++s) {
     const ParticleId p = plan.corner[s];
+    if (!own(p)) continue;
     CstCornerSums& c = sums[s];
     const Vec3 normal = c.normal, smooth = c.smooth;
     const double nn = normal.squaredNorm();
@@ -240,6 +244,38 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
     if (plan.shared[s]) F[p] += Vec3::Zero();
     c = CstCornerSums{};
   }
+}
+
+}  // namespace
+
+void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
+  const double gf = settings.geometric_factor;
+  if (!cst_plan_.current(model_)) cst_plan_.derive(model_);
+  const CstPlan& plan = cst_plan_;
+  // The projected corners' sums, one per slot: zero between calls (every
+  // slot is cleared after its projection).
+  if (cst_corner_sums_.size() != plan.corner.size()) cst_corner_sums_.assign(plan.corner.size(), CstCornerSums{});
+  CstCornerSums* sums = cst_corner_sums_.data();
+  const Cst* csts = model_.csts.awake_begin();  // awake only
+  const std::uint32_t n_csts = std::uint32_t(model_.csts.awake_end() - csts);
+  if (n_csts < element_threads_from || element_threads() == 1) {
+    cst_forces<false>(plan, csts, nullptr, n_csts, {}, x, gf, F, S, sums);
+    project_corners<false>(plan, {}, F, sums);
+    return;
+  }
+  // On threads: each adds into the particles it owns (ElementShares).
+  const std::vector<ParticleId>& bound = element_bounds();
+  if (!cst_shares_.current(model_, bound))
+    cst_shares_.derive(model_, bound, n_csts, [&](std::uint32_t e, ParticleId* at) {
+      at[0] = plan.i[e], at[1] = plan.j[e], at[2] = plan.k[e];
+      return 3;
+    });
+  const ElementShares& sh = cst_shares_;
+  workers_->run(unsigned(bound.size()) - 1, [&](unsigned t) {
+    const Owned<true> own{bound[t], bound[t + 1]};
+    cst_forces<true>(plan, csts, sh.items.data() + sh.begin[t], sh.begin[t + 1] - sh.begin[t], own, x, gf, F, S, sums);
+    project_corners<true>(plan, own, F, sums);
+  });
 }
 
 }  // namespace tendril

@@ -9,7 +9,7 @@ void CstPlan::derive(const Model& m) {
   sigma_warp.resize(n), sigma_weft.resize(n), g_string.resize(n);
   along_normal.resize(n);
   slot.assign(3 * n, kNoSlot);
-  block_analysis.assign((n + block - 1) / block, 0);
+  analysis.resize(n);
   corner.clear();
   shared.clear();
   std::vector<std::uint32_t> slot_of(m.particles.capacity(), kNoSlot);
@@ -20,7 +20,7 @@ void CstPlan::derive(const Model& m) {
     sigma_warp[e] = mb.sigma_warp, sigma_weft[e] = mb.sigma_weft;
     g_string[e] = 0.5 * (mb.sigma_warp + mb.sigma_weft);
     along_normal[e] = mb.mode == Membrane::FormFinding ? t.interior : 0;
-    if (mb.mode == Membrane::Analysis) block_analysis[e / block] = 1;
+    analysis[e] = mb.mode == Membrane::Analysis;
     if (mb.mode != Membrane::FormFinding || !t.interior) continue;
     // Every corner of an interior form-finding triangle is projected (with
     // its pull summed in its slot only where its bit is set).

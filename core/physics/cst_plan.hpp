@@ -35,9 +35,7 @@ struct CstPlan {
   // follows the G-strings (an interior vertex in form-finding).
   std::vector<std::uint8_t> along_normal;
   std::vector<std::uint32_t> slot;  // 3 per triangle: its corners' slots, kNoSlot where none
-  // Per block of `block` triangles: whether one of them is in analysis.
-  std::uint32_t block = 64;
-  std::vector<std::uint8_t> block_analysis;
+  std::vector<std::uint8_t> analysis;  // 1: in analysis (eq. 3.37-3.39), else form-finding
   // Per slot: the corner, and whether more than one triangle projects it.
   std::vector<ParticleId> corner;
   std::vector<std::uint8_t> shared;

@@ -138,8 +138,8 @@ struct Beam6Block {
 
 // Eigen's quaternion product a * b for doubles with SSE2 (Geometry_SIMD.h's
 // quat_product), then toRotationMatrix of it.
-TENDRIL_INLINE void frame_matrix(double ax, double ay, double az, double aw, double bx, double by, double bz,
-                                 double bw, double (&E)[3][3]) {
+inline TENDRIL_INLINE void frame_matrix(double ax, double ay, double az, double aw, double bx, double by, double bz,
+                                        double bw, double (&E)[3][3]) {
   const double x = (aw * bx + ay * bz) - (az * by - ax * bw);
   const double y = (aw * by + ay * bw) + (az * bx - ax * bz);
   const double z = (aw * bz - ay * bx) + (az * bw + ax * by);
@@ -195,6 +195,88 @@ TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, std::uint32_t n, double gf) 
     b.fx[m] = (ux1 * t2 - ux2 * t1) / l - N * ux0;
     b.fy[m] = (ux2 * t0 - ux0 * t2) / l - N * ux1;
     b.fz[m] = (ux0 * t1 - ux1 * t0) / l - N * ux2;
+  }
+}
+
+// One thread's hinges: elements items[0 .. count) (kShared) or 0 .. count,
+// in the model's order, their forces added into the particles it owns.
+// Returns the index of the first degenerate hinge (no plane can be found:
+// a zero-length link), or kNone.
+template <bool kShared>
+std::uint32_t hinge_forces(const Hinge* hinges, const std::uint32_t* items, std::uint32_t count, Owned<kShared> own,
+                           const Vec3* x, Vec3* F, double* S) {
+  HingeBlock hb;
+  for (std::uint32_t e0 = 0; e0 < count; e0 += kHingeBlock) {
+    const std::uint32_t n = std::min(kHingeBlock, count - e0);
+    for (std::uint32_t m = 0; m < n; ++m) {
+      const Hinge& h = hinges[kShared ? items[e0 + m] : e0 + m];
+      const Vec3 a = x[h.j] - x[h.i], b = x[h.k] - x[h.j], c = x[h.k] - x[h.i];
+      hb.ax[m] = a.x(), hb.ay[m] = a.y(), hb.az[m] = a.z();
+      hb.bx[m] = b.x(), hb.by[m] = b.y(), hb.bz[m] = b.z();
+      hb.cx[m] = c.x(), hb.cy[m] = c.y(), hb.cz[m] = c.z();
+      hb.EI[m] = h.EI;
+      hb.rest[m] = h.rest_curvature;
+    }
+    hinge_block(hb, n);
+    for (std::uint32_t m = 0; m < n; ++m) {
+      const std::uint32_t e = kShared ? items[e0 + m] : e0 + m;
+      const Hinge& h = hinges[e];
+      if (!std::isfinite(hb.k[m])) [[unlikely]]
+        return e;
+      const Vec3 fi(hb.fix[m], hb.fiy[m], hb.fiz[m]), fk(hb.fkx[m], hb.fky[m], hb.fkz[m]);
+      if (own(h.j)) S[h.j] += hb.k[m];
+      if (own(h.i)) F[h.i] += fi;
+      if (own(h.k)) F[h.k] += fk;
+      if (own(h.j)) F[h.j] -= fi + fk;
+    }
+  }
+  return kNone;
+}
+
+// One thread's 6-DOF elements, as hinge_forces.
+template <bool kShared>
+void beam6_forces(const Beam6Plan& plan, const Beam6* beams, const std::uint32_t* items, std::uint32_t count,
+                  Owned<kShared> own, const Vec3* x, const Quat* q, double gf, Vec3* F, double* S, Vec3* T, double* K) {
+  Beam6Block bb;
+  for (std::uint32_t e0 = 0; e0 < count; e0 += kBeam6Block) {
+    const std::uint32_t n = std::min(kBeam6Block, count - e0);
+    for (std::uint32_t m = 0; m < n; ++m) {
+      const std::uint32_t e = kShared ? items[e0 + m] : e0 + m;
+      const ParticleId i = plan.i[e], j = plan.j[e];
+      const Vec3 d = x[j] - x[i];
+      const Quat &qi = q[i], &qj = q[j], &ei = plan.end_i[e], &ej = plan.end_j[e];
+      bb.dx[m] = d.x(), bb.dy[m] = d.y(), bb.dz[m] = d.z();
+      bb.qix[m] = qi.x(), bb.qiy[m] = qi.y(), bb.qiz[m] = qi.z(), bb.qiw[m] = qi.w();
+      bb.eix[m] = ei.x(), bb.eiy[m] = ei.y(), bb.eiz[m] = ei.z(), bb.eiw[m] = ei.w();
+      bb.qjx[m] = qj.x(), bb.qjy[m] = qj.y(), bb.qjz[m] = qj.z(), bb.qjw[m] = qj.w();
+      bb.ejx[m] = ej.x(), bb.ejy[m] = ej.y(), bb.ejz[m] = ej.z(), bb.ejw[m] = ej.w();
+      bb.L[m] = plan.L[e], bb.EA[m] = plan.EA[e], bb.pre[m] = plan.prestress[e];
+      bb.k_static[m] = plan.k_static[e], bb.kr_static[m] = plan.kr[e];
+      bb.cz[m] = plan.cz[e], bb.cy[m] = plan.cy[e], bb.torsion[m] = plan.torsion[e];
+    }
+    beam6_block(bb, n, gf);
+    for (std::uint32_t m = 0; m < n; ++m) {
+      const std::uint32_t e = kShared ? items[e0 + m] : e0 + m;
+      const ParticleId i = plan.i[e], j = plan.j[e];
+      Beam6Ends r;
+      if (bb.redo[m] != 0) [[unlikely]] {
+        r = beam6_ends(beams[e], x, q, gf);
+      } else {
+        r.k = bb.k[m], r.kr = bb.kr[m];
+        r.fj = Vec3(bb.fx[m], bb.fy[m], bb.fz[m]);
+        r.ta = Vec3(bb.tax[m], bb.tay[m], bb.taz[m]);
+        r.tb = Vec3(bb.tbx[m], bb.tby[m], bb.tbz[m]);
+      }
+      const bool own_i = own(i), own_j = own(j);
+      if (own_i) S[i] += r.k;
+      if (own_j) S[j] += r.k;
+      if (own_i) K[i] += r.kr;
+      if (own_j) K[j] += r.kr;
+      if (own_i) F[i] -= r.fj;
+      if (own_j) F[j] += r.fj;
+      if (own_i) T[i] += r.ta;
+      if (own_j) T[j] += r.tb;
+    }
   }
 }
 
@@ -318,17 +400,10 @@ const ForceSum* Solver::chunk_force_sums(std::uint32_t chunk, const Vec3* x, std
   return sums;
 }
 
-void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(std::uint32_t)> late) const {
+unsigned Solver::split_chunks() const {
   const BarChunks& B = bar_chunks_;
   const std::uint32_t n = std::uint32_t(B.chunks.size());
   const unsigned threads = unsigned(std::clamp<std::uint32_t>(std::uint32_t(settings.threads), 1, n));
-  if (threads == 1) {
-    for (std::uint32_t c = 0; c < n; ++c) {
-      body(c);
-      late(c);
-    }
-    return;
-  }
   // Contiguous ranges of about equal particle counts.
   std::vector<std::uint32_t>& first = thread_first_chunk_;
   first.assign(threads + 1, n);  // allocates when the thread count grows only
@@ -340,6 +415,34 @@ void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(
     while (c < n && B.chunks[c].particles_end <= target) ++c;
     first[t] = std::max(c, first[t - 1]);
   }
+  return threads;
+}
+
+unsigned Solver::element_threads() const {
+  const std::uint32_t n = std::uint32_t(bar_chunks().chunks.size());
+  return unsigned(std::clamp<std::uint32_t>(std::uint32_t(settings.threads), 1, n));
+}
+
+const std::vector<ParticleId>& Solver::element_bounds() const {
+  const BarChunks& B = bar_chunks();
+  const unsigned threads = split_chunks();
+  element_bound_.resize(threads + 1);
+  for (unsigned t = 0; t <= threads; ++t) element_bound_[t] = ParticleId(thread_first_chunk_[t]) << B.shift;
+  return element_bound_;
+}
+
+void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(std::uint32_t)> late) const {
+  const BarChunks& B = bar_chunks_;
+  const std::uint32_t n = std::uint32_t(B.chunks.size());
+  if (std::clamp<std::uint32_t>(std::uint32_t(settings.threads), 1, n) == 1) {
+    for (std::uint32_t c = 0; c < n; ++c) {
+      body(c);
+      late(c);
+    }
+    return;
+  }
+  const unsigned threads = split_chunks();
+  const std::vector<std::uint32_t>& first = thread_first_chunk_;
   bool deferred = false;
   for (unsigned t = 0; t < threads; ++t)
     for (std::uint32_t k = first[t]; k < first[t + 1]; ++k) deferred |= B.chunks[k].first_source < first[t];
@@ -385,76 +488,48 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
   // resolution, thesis 5.5.2.3) sit behind ElementBuffer::awake, unvisited.
   const Hinge* hinges = model_.hinges.awake_begin();
   const std::uint32_t n_hinges = std::uint32_t(model_.hinges.awake_end() - hinges);
-  if (n_hinges > 0) {
-    HingeBlock hb;
-    for (std::uint32_t e0 = 0; e0 < n_hinges; e0 += kHingeBlock) {
-      const std::uint32_t n = std::min(kHingeBlock, n_hinges - e0);
-      for (std::uint32_t m = 0; m < n; ++m) {
-        const Hinge& h = hinges[e0 + m];
-        const Vec3 a = x[h.j] - x[h.i], b = x[h.k] - x[h.j], c = x[h.k] - x[h.i];
-        hb.ax[m] = a.x(), hb.ay[m] = a.y(), hb.az[m] = a.z();
-        hb.bx[m] = b.x(), hb.by[m] = b.y(), hb.bz[m] = b.z();
-        hb.cx[m] = c.x(), hb.cy[m] = c.y(), hb.cz[m] = c.z();
-        hb.EI[m] = h.EI;
-        hb.rest[m] = h.rest_curvature;
-      }
-      hinge_block(hb, n);
-      for (std::uint32_t m = 0; m < n; ++m) {
-        const Hinge& h = hinges[e0 + m];
-        if (!std::isfinite(hb.k[m])) [[unlikely]]
-          throw_degenerate_hinge(model_, h, x);  // a zero-length link (coincident particles): stop, naming them
-        const Vec3 fi(hb.fix[m], hb.fiy[m], hb.fiz[m]), fk(hb.fkx[m], hb.fky[m], hb.fkz[m]);
-        S[h.j] += hb.k[m];
-        F[h.i] += fi;
-        F[h.k] += fk;
-        F[h.j] -= fi + fk;
-      }
-    }
-  }
   const Beam6* beam6s = model_.beam6s.awake_begin();
   const std::uint32_t n_beam6s = std::uint32_t(model_.beam6s.awake_end() - beam6s);
-  if (n_beam6s > 0) {
-    if (!beam6_plan_.current(model_)) beam6_plan_.derive(model_);
-    const Beam6Plan& plan = beam6_plan_;
-    Beam6Block bb;
-    for (std::uint32_t e0 = 0; e0 < n_beam6s; e0 += kBeam6Block) {
-      const std::uint32_t n = std::min(kBeam6Block, n_beam6s - e0);
-      for (std::uint32_t m = 0; m < n; ++m) {
-        const std::uint32_t e = e0 + m;
-        const ParticleId i = plan.i[e], j = plan.j[e];
-        const Vec3 d = x[j] - x[i];
-        const Quat &qi = q[i], &qj = q[j], &ei = plan.end_i[e], &ej = plan.end_j[e];
-        bb.dx[m] = d.x(), bb.dy[m] = d.y(), bb.dz[m] = d.z();
-        bb.qix[m] = qi.x(), bb.qiy[m] = qi.y(), bb.qiz[m] = qi.z(), bb.qiw[m] = qi.w();
-        bb.eix[m] = ei.x(), bb.eiy[m] = ei.y(), bb.eiz[m] = ei.z(), bb.eiw[m] = ei.w();
-        bb.qjx[m] = qj.x(), bb.qjy[m] = qj.y(), bb.qjz[m] = qj.z(), bb.qjw[m] = qj.w();
-        bb.ejx[m] = ej.x(), bb.ejy[m] = ej.y(), bb.ejz[m] = ej.z(), bb.ejw[m] = ej.w();
-        bb.L[m] = plan.L[e], bb.EA[m] = plan.EA[e], bb.pre[m] = plan.prestress[e];
-        bb.k_static[m] = plan.k_static[e], bb.kr_static[m] = plan.kr[e];
-        bb.cz[m] = plan.cz[e], bb.cy[m] = plan.cy[e], bb.torsion[m] = plan.torsion[e];
+  if (n_beam6s > 0 && !beam6_plan_.current(model_)) beam6_plan_.derive(model_);
+  const Beam6Plan& plan = beam6_plan_;
+  if (n_hinges + n_beam6s > 0 && n_hinges + n_beam6s >= element_threads_from && element_threads() > 1) {
+    // On threads: each adds into the particles it owns (ElementShares).
+    const std::vector<ParticleId>& bound = element_bounds();
+    const unsigned threads = unsigned(bound.size()) - 1;
+    if (n_hinges > 0 && !hinge_shares_.current(model_, bound))
+      hinge_shares_.derive(model_, bound, n_hinges, [&](std::uint32_t e, ParticleId* at) {
+        at[0] = hinges[e].i, at[1] = hinges[e].j, at[2] = hinges[e].k;
+        return 3;
+      });
+    if (n_beam6s > 0 && !beam6_shares_.current(model_, bound))
+      beam6_shares_.derive(model_, bound, n_beam6s, [&](std::uint32_t e, ParticleId* at) {
+        at[0] = plan.i[e], at[1] = plan.j[e];
+        return 2;
+      });
+    std::vector<std::uint32_t>& bad = thread_bad_hinge_;
+    bad.assign(threads, kNone);
+    workers_->run(threads, [&](unsigned t) {
+      const Owned<true> own{bound[t], bound[t + 1]};
+      if (n_hinges > 0) {
+        const ElementShares& sh = hinge_shares_;
+        bad[t] = hinge_forces<true>(hinges, sh.items.data() + sh.begin[t], sh.begin[t + 1] - sh.begin[t], own, x, F,
+                                    S);
+        if (bad[t] != kNone) return;
       }
-      beam6_block(bb, n, gf);
-      for (std::uint32_t m = 0; m < n; ++m) {
-        const ParticleId i = plan.i[e0 + m], j = plan.j[e0 + m];
-        Beam6Ends e;
-        if (bb.redo[m] != 0) [[unlikely]] {
-          e = beam6_ends(beam6s[e0 + m], x, q, gf);
-        } else {
-          e.k = bb.k[m], e.kr = bb.kr[m];
-          e.fj = Vec3(bb.fx[m], bb.fy[m], bb.fz[m]);
-          e.ta = Vec3(bb.tax[m], bb.tay[m], bb.taz[m]);
-          e.tb = Vec3(bb.tbx[m], bb.tby[m], bb.tbz[m]);
-        }
-        S[i] += e.k;
-        S[j] += e.k;
-        K[i] += e.kr;
-        K[j] += e.kr;
-        F[i] -= e.fj;
-        F[j] += e.fj;
-        T[i] += e.ta;
-        T[j] += e.tb;
+      if (n_beam6s > 0) {
+        const ElementShares& sh = beam6_shares_;
+        beam6_forces<true>(plan, beam6s, sh.items.data() + sh.begin[t], sh.begin[t + 1] - sh.begin[t], own, x, q, gf,
+                           F, S, T, K);
       }
-    }
+    });
+    const std::uint32_t first_bad = *std::min_element(bad.begin(), bad.end());
+    if (first_bad != kNone) [[unlikely]]
+      throw_degenerate_hinge(model_, hinges[first_bad], x);  // a zero-length link (coincident particles): stop, naming them
+  } else {
+    const std::uint32_t bad = hinge_forces<false>(hinges, nullptr, n_hinges, {}, x, F, S);
+    if (bad != kNone) [[unlikely]]
+      throw_degenerate_hinge(model_, hinges[bad], x);  // a zero-length link (coincident particles): stop, naming them
+    if (n_beam6s > 0) beam6_forces<false>(plan, beam6s, nullptr, n_beam6s, {}, x, q, gf, F, S, T, K);
   }
   accumulate_couples(x, F);  // moments on 3-DOF particles (couples.cpp)
   for (Dart d : model_.clamp_darts.raw()) {  // clamped 3-DOF beam ends (Model::set_clamp)
