@@ -258,7 +258,7 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
   CstCornerSums* sums = cst_corner_sums_.data();
   const Cst* csts = model_.csts.awake_begin();  // awake only
   const std::uint32_t n_csts = std::uint32_t(model_.csts.awake_end() - csts);
-  if (n_csts < element_threads_from || element_threads() == 1) {
+  if (!elements_on_threads()) {
     cst_forces<false>(plan, csts, nullptr, n_csts, {}, x, gf, F, S, sums);
     project_corners<false>(plan, {}, F, sums);
     return;

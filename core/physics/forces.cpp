@@ -423,6 +423,12 @@ unsigned Solver::element_threads() const {
   return unsigned(std::clamp<std::uint32_t>(std::uint32_t(settings.threads), 1, n));
 }
 
+bool Solver::elements_on_threads() const {
+  const Model& m = model_;
+  const std::size_t elements = m.bars.awake + m.hinges.awake + m.beam6s.awake + m.csts.awake;
+  return elements >= element_threads_from && element_threads() > 1;
+}
+
 const std::vector<ParticleId>& Solver::element_bounds() const {
   const BarChunks& B = bar_chunks();
   const unsigned threads = split_chunks();
@@ -431,10 +437,11 @@ const std::vector<ParticleId>& Solver::element_bounds() const {
   return element_bound_;
 }
 
-void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(std::uint32_t)> late) const {
+void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(std::uint32_t)> late,
+                        bool threaded) const {
   const BarChunks& B = bar_chunks_;
   const std::uint32_t n = std::uint32_t(B.chunks.size());
-  if (std::clamp<std::uint32_t>(std::uint32_t(settings.threads), 1, n) == 1) {
+  if (!threaded || std::clamp<std::uint32_t>(std::uint32_t(settings.threads), 1, n) == 1) {
     for (std::uint32_t c = 0; c < n; ++c) {
       body(c);
       late(c);
@@ -467,6 +474,7 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
   const Particles& P = model_.particles;
   const BarChunks& B = bar_chunks();
   const std::uint64_t pass = new_chunk_pass();
+  const bool threaded = elements_on_threads();
   for_chunks([&](std::uint32_t c) { chunk_bar_sums(c, x, pass, true); },
              [&](std::uint32_t c) {
                const ForceSum* sums = chunk_force_sums(c, x, pass);
@@ -478,7 +486,8 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
                  F[p] = Vec3(f[0], f[1], f[2]);
                  S[p] = f[3];
                }
-             });
+             },
+             threaded);
   for (ParticleId p : P.rotational.raw()) {
     T[p] = P.moment[p];
     K[p] = 0;
@@ -492,7 +501,7 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
   const std::uint32_t n_beam6s = std::uint32_t(model_.beam6s.awake_end() - beam6s);
   if (n_beam6s > 0 && !beam6_plan_.current(model_)) beam6_plan_.derive(model_);
   const Beam6Plan& plan = beam6_plan_;
-  if (n_hinges + n_beam6s > 0 && n_hinges + n_beam6s >= element_threads_from && element_threads() > 1) {
+  if (n_hinges + n_beam6s > 0 && threaded) {
     // On threads: each adds into the particles it owns (ElementShares).
     const std::vector<ParticleId>& bound = element_bounds();
     const unsigned threads = unsigned(bound.size()) - 1;

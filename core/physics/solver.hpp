@@ -148,12 +148,14 @@ class Solver {
   explicit Solver(Model& model);
   ~Solver();
   SolverSettings settings;
-  // With settings.threads > 1, the fewest elements of a loop (hinges and
-  // 6-DOF beams together, or CST triangles) that runs on the threads: below
-  // it the threads' hand-over costs more than it saves (grids of 10K
-  // particles ran 0.65-0.95x as fast on two threads, of 100K 1.1-2.1x).
-  // The numbers are the same either way.
-  std::uint32_t element_threads_from = 32768;
+  // With settings.threads > 1, the fewest awake elements (bars, hinges,
+  // 6-DOF beams and CST triangles together) of a model whose force pass
+  // runs on the threads (the bar-only Leapfrog step always does): below it
+  // handing the particles' forces from core to core costs more than the
+  // threads save (on two threads, grids of 10K particles ran 0.6-0.9x as
+  // fast, 40K elements of a beam grid 0.75x, grids of 100K particles 0.85-
+  // 1.7x). The numbers are the same either way.
+  std::uint32_t element_threads_from = 65536;
 
   void step();
   // The values of steps() at which a step failed (threw). A failed step may
@@ -276,7 +278,9 @@ class Solver {
   // body(c) then late(c) for every chunk, the chunks split over the threads
   // in contiguous ranges; a chunk whose inbox draws on an earlier thread's
   // range runs late(c) once every thread finished its range.
-  void for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(std::uint32_t)> late) const;
+  // `threaded` false: on the calling thread alone.
+  void for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(std::uint32_t)> late,
+                  bool threaded = true) const;
   // The same body(c) for every chunk, in parallel.
   void for_chunks(FunctionRef<void(std::uint32_t)> body) const;
   // The threads' contiguous ranges of chunks (thread_first_chunk_) for
@@ -285,6 +289,7 @@ class Solver {
   // The element loops on threads (ElementShares): how many, and the
   // particle ids each owns, those of its chunks.
   unsigned element_threads() const;
+  bool elements_on_threads() const;  // element_threads() > 1 and element_threads_from reached
   const std::vector<ParticleId>& element_bounds() const;
   // Leapfrog and Symplectic Euler over bars alone: forces and the kick in
   // one pass per chunk, then the drift (integrators.cpp).
