@@ -35,6 +35,16 @@ inline double physical_mass(double point, double lumped, const Vec3& free) {
   const double m = point + lumped;
   return m > 0 || !free.isZero() ? m : 1.0;
 }
+
+// The free axes of each translation (or, shifted, rotation) lock.
+const Vec3 free_of[8] = {free_axes(0), free_axes(1), free_axes(2), free_axes(3),
+                         free_axes(4), free_axes(5), free_axes(6), free_axes(7)};
+
+// Every term finite: x - x is 0 for a finite x, NaN for an infinite or NaN
+// one, and a NaN stays in the sum.
+inline bool all_finite(const Vec3& f, double s) {
+  return (f.x() - f.x()) + (f.y() - f.y()) + (f.z() - f.z()) + (s - s) == 0;
+}
 }  // namespace
 
 // Leapfrog (eq. 3.11-3.12, with eq. 3.26) and Symplectic Euler are the same
@@ -99,8 +109,6 @@ struct KickTotals {
 // force, stiffness and mass checked; else the masses are read.
 template <bool kPrepare, bool kPhysical>
 KickTotals kick_pass(const KickPass& a, KickTotals t) {
-  static const Vec3 free_of[8] = {free_axes(0), free_axes(1), free_axes(2), free_axes(3),
-                                  free_axes(4), free_axes(5), free_axes(6), free_axes(7)};
   const ParticleId* __restrict ids = a.ids;
   const std::uint8_t* __restrict active = a.active;
   const std::uint8_t* __restrict lock = a.lock;
@@ -126,9 +134,7 @@ KickTotals kick_pass(const KickPass& a, KickTotals t) {
       } else {
         M = mass_scale * s;
       }
-      // Every term finite: x - x is 0 for a finite x, NaN otherwise.
-      const double finite = (f.x() - f.x()) + (f.y() - f.y()) + (f.z() - f.z()) + (s - s);
-      if (!(finite == 0) || !(M > 0)) [[unlikely]] {
+      if (!all_finite(f, s) || !(M > 0)) [[unlikely]] {
         t.bad = true;
         continue;
       }
@@ -263,8 +269,6 @@ struct KickSums {
 template <bool kPhysical, bool kDrift>
 KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, std::uint32_t end, const KickArgs& a,
                         const ForceSum* __restrict forces, ParticleId base) {
-  static const Vec3 free_of[8] = {free_axes(0), free_axes(1), free_axes(2), free_axes(3),
-                                  free_axes(4), free_axes(5), free_axes(6), free_axes(7)};
   const std::uint8_t* __restrict lock = a.lock;
   double* __restrict S = a.S;
   Vec3* __restrict F = a.F;
@@ -287,10 +291,7 @@ KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, s
     } else {
       M = mass_scale * s;
     }
-    // Every term finite: x - x is 0 for a finite x, NaN for an infinite or
-    // NaN one, and a NaN stays in the sum.
-    const double finite = (f.x() - f.x()) + (f.y() - f.y()) + (f.z() - f.z()) + (s - s);
-    if (!(finite == 0) || !(M > 0)) [[unlikely]] {
+    if (!all_finite(f, s) || !(M > 0)) [[unlikely]] {
       sums.bad = true;
       continue;
     }
