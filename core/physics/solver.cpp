@@ -204,7 +204,8 @@ void Solver::size_scratch() {
     x0_.resize(n);
     r0_.resize(n);
   }
-  if (xs_.size() != n) {
+  // xs_ alone may have its size already: the fused bar step drifts into it.
+  if (xs_.size() != n || Fs_.size() != n) {
     xs_.resize(n);
     Fs_.resize(n);
     vs_.resize(n);
