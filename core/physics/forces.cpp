@@ -386,7 +386,7 @@ ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const Vec3* x, std::uint64
   return sums;
 }
 
-const ForceSum* Solver::chunk_force_sums(std::uint32_t chunk, const Vec3* x, std::uint64_t pass) const {
+ForceSum* Solver::chunk_force_sums(std::uint32_t chunk, const Vec3* x, std::uint64_t pass) const {
   ChunkSumsScratch& scratch = chunk_sums_scratch;
   ForceSum* sums =
       scratch.pass == pass && scratch.chunk == chunk ? scratch.data() : chunk_bar_sums(chunk, x, pass, false);
@@ -398,6 +398,50 @@ const ForceSum* Solver::chunk_force_sums(std::uint32_t chunk, const Vec3* x, std
     sums[B.inbox_particle[n] - base] -= ForceSum{f.x(), f.y(), f.z(), -B.slot_stiffness[B.inbox_slot[n]]};
   }
   return sums;
+}
+
+const HingeChunks& Solver::hinge_chunks() const {
+  const BarChunks& B = bar_chunks();
+  if (!hinge_chunks_.current(model_, B.shift)) hinge_chunks_.derive(model_, B.shift, B.chunks.size());
+  return hinge_chunks_;
+}
+
+// hinge_forces' arithmetic and order into a chunk's sums: per particle its
+// hinges in the model's order, i's and k's pull then j's, whose stiffness
+// rides in the fourth lane (S - (-k) is S + k exactly; the + 0 added to i's
+// and k's is exact too, a sum that starts at +0 never being -0).
+std::uint32_t Solver::chunk_hinge_sums(std::uint32_t chunk, const Vec3* x, ForceSum* sums) const {
+  const HingeChunks& H = hinge_chunks_;
+  const std::uint32_t shift = bar_chunks_.shift;
+  const ParticleId base = ParticleId(chunk) << shift;
+  const Owned<true> own{base, base + (ParticleId(1) << shift)};
+  const ParticleId *hi = H.i.data(), *hj = H.j.data(), *hk = H.k.data();
+  const std::uint32_t first = H.begin[chunk], last = H.begin[chunk + 1];
+  HingeBlock hb;
+  for (std::uint32_t e0 = first; e0 < last; e0 += kHingeBlock) {
+    const std::uint32_t n = std::min(kHingeBlock, last - e0);
+    for (std::uint32_t m = 0; m < n; ++m) {
+      const std::uint32_t e = e0 + m;
+      const Vec3 a = x[hj[e]] - x[hi[e]], b = x[hk[e]] - x[hj[e]], c = x[hk[e]] - x[hi[e]];
+      hb.ax[m] = a.x(), hb.ay[m] = a.y(), hb.az[m] = a.z();
+      hb.bx[m] = b.x(), hb.by[m] = b.y(), hb.bz[m] = b.z();
+      hb.cx[m] = c.x(), hb.cy[m] = c.y(), hb.cz[m] = c.z();
+      hb.EI[m] = H.EI[e];
+      hb.rest[m] = H.rest[e];
+    }
+    hinge_block(hb, n);
+    for (std::uint32_t m = 0; m < n; ++m) {
+      const std::uint32_t e = e0 + m;
+      if (!std::isfinite(hb.k[m])) [[unlikely]]
+        return H.hinge[e];
+      const ParticleId i = hi[e], j = hj[e], k = hk[e];
+      if (own(i)) sums[i - base] += ForceSum{hb.fix[m], hb.fiy[m], hb.fiz[m], 0.0};
+      if (own(k)) sums[k - base] += ForceSum{hb.fkx[m], hb.fky[m], hb.fkz[m], 0.0};
+      if (own(j))
+        sums[j - base] -= ForceSum{hb.fix[m] + hb.fkx[m], hb.fiy[m] + hb.fky[m], hb.fiz[m] + hb.fkz[m], -hb.k[m]};
+    }
+  }
+  return kNone;
 }
 
 unsigned Solver::split_chunks() const {

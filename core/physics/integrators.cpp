@@ -317,15 +317,15 @@ KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, s
 bool Solver::fused_kick_drift_applies() const {
   // Auto, read between steps (fused_step_bytes): what its next step takes.
   const Integrator i = settings.integrator == Integrator::Auto ? auto_choice_ : settings.integrator;
-  return (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) && model_.hinges.awake == 0 &&
-         model_.beam6s.awake == 0 && model_.joints.items.empty() && model_.goals.empty() &&
+  return (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) && model_.beam6s.awake == 0 && model_.joints.items.empty() && model_.goals.empty() &&
          model_.csts.items.empty() && model_.particles.rotational.empty() && couples().empty() &&
          model_.clamp_darts.empty() && model_.rigid_joints.empty() && !pressure_acts();
 }
 
-// kick_drift for a model of bars alone, without a separate force pass: each
-// chunk's particles are kicked as soon as their forces are complete (its
-// own bars, then its inbox), while they are still in the cache. The
+// kick_drift for a model of bars and spline-beam hinges alone, without a
+// separate force pass: each chunk's particles are kicked as soon as their
+// forces are complete (its own bars, its inbox, then its hinges), while
+// they are still in the cache. The
 // arithmetic is kick_drift's; sums over particles (kinetic energy) are
 // gathered per chunk and added in chunk order. A force, stiffness or mass
 // the step cannot use is found only after some velocities were kicked:
@@ -338,9 +338,14 @@ bool Solver::fused_kick_drift_applies() const {
 // a swap once the step is known to be an ordinary one. A kinetic peak or an
 // error leaves the old positions as they were, so every path computes what
 // the two-pass form computes, bit for bit.
+// A hinge that cannot be evaluated (a zero-length link) is found after
+// some velocities were kicked: they are reset and it is named, as the
+// element pass names it, no particle moved.
 void Solver::fused_kick_drift(bool whole_kick) {
   Particles& P = model_.particles;
   const BarChunks& chunks = bar_chunks();
+  const bool hinged = model_.hinges.awake > 0;
+  if (hinged) hinge_chunks();
   chunk_sums_.resize(chunks.chunks.size());
   const bool one_pass = P.integrated.size() == P.capacity();
   if (one_pass && xs_.size() != P.capacity()) xs_.resize(P.capacity());
@@ -364,7 +369,12 @@ void Solver::fused_kick_drift(bool whole_kick) {
   const std::uint64_t pass = new_chunk_pass();
   auto kick_chunk = [&](std::uint32_t c) {
     const BarChunks::Chunk& ch = chunks.chunks[c];
-    const ForceSum* sums = chunk_force_sums(c, x, pass);
+    ForceSum* sums = chunk_force_sums(c, x, pass);
+    const std::uint32_t bad_hinge = hinged ? chunk_hinge_sums(c, x, sums) : kNone;
+    if (bad_hinge != kNone) [[unlikely]] {
+      chunk_sums_[c] = {0, 0, 0, false, bad_hinge};
+      return;
+    }
     const ParticleId base = ParticleId(c) << chunks.shift;
     const ParticleId* ids = chunks.particles.data();
     const std::uint32_t b = ch.particles_begin, e = ch.particles_end;
@@ -372,17 +382,23 @@ void Solver::fused_kick_drift(bool whole_kick) {
                                       : kick_particles<true, false>(ids, b, e, args, sums, base))
                                 : (xn ? kick_particles<false, true>(ids, b, e, args, sums, base)
                                       : kick_particles<false, false>(ids, b, e, args, sums, base));
-    chunk_sums_[c] = {k.ke, k.momentum2, k.residual2, k.bad};
+    chunk_sums_[c] = {k.ke, k.momentum2, k.residual2, k.bad, kNone};
   };
   for_chunks([&](std::uint32_t c) { chunk_bar_sums(c, x, pass, true); }, kick_chunk);
   ++evaluations_;
   double ke = 0, momentum2 = 0, residual2 = 0;
   bool bad = false;
+  std::uint32_t bad_hinge = kNone;
   for (const ChunkSums& s : chunk_sums_) {
     ke += s.ke;
     momentum2 = std::max(momentum2, s.momentum2);
     residual2 = std::max(residual2, s.residual2);
     bad |= s.bad;
+    bad_hinge = std::min(bad_hinge, s.bad_hinge);
+  }
+  if (bad_hinge != kNone) [[unlikely]] {
+    reset_motion();
+    throw_degenerate_hinge(model_, model_.hinges.awake_begin()[bad_hinge], x, "velocities were reset, no particle was moved");
   }
   if (bad) [[unlikely]] {
     reset_motion();
@@ -447,9 +463,11 @@ double Solver::fused_step_bytes() const {
   // Per bar its ends, k, rest length, prestress and cable flag; per crossing
   // bar its slot written, then read through the inbox (particle, slot).
   const double elements = bars * (4 + 4 + 8 + 8 + 8 + 1) + crossing * (24 + 8 + 4 + 4 + 24 + 8);
+  // Per hinge of a chunk its ends, EI and rest curvature (hinge_chunks.hpp).
+  const double hinges = model_.hinges.awake > 0 ? double(hinge_chunks().i.size()) * (4 + 4 + 4 + 8 + 8) : 0.0;
   // Two passes: id, position read and written, velocity read.
   const double drift = one_pass ? 0 : particles * (4 + 24 + 24 + 24);
-  return kick + elements + drift;
+  return kick + elements + hinges + drift;
 }
 
 void Solver::synchronize_velocities() {

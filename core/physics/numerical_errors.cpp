@@ -21,7 +21,7 @@ std::string describe_particle(const Model& m, ParticleId p) {
   return blocks.empty() ? s : s + ")";
 }
 
-void throw_degenerate_hinge(const Model& m, const Hinge& h, const Vec3* x) {
+void throw_degenerate_hinge(const Model& m, const Hinge& h, const Vec3* x, const char* done) {
   std::string why;
   for (ParticleId p : {h.i, h.j, h.k})
     if (!x[p].allFinite()) why = "the position of particle " + std::to_string(p) + " is not finite";
@@ -32,7 +32,7 @@ void throw_degenerate_hinge(const Model& m, const Hinge& h, const Vec3* x) {
   }
   throw NumericalError("solver: the hinge of " + block_name(m, m.dart_block[h.dart]) + " at " +
                        describe_particle(m, h.j) + " between particles " + std::to_string(h.i) + " and " +
-                       std::to_string(h.k) + ": " + why + "; no particle was moved");
+                       std::to_string(h.k) + ": " + why + "; " + done);
 }
 
 NumericalError non_finite_motion(const Model& m, const Vec3* x, const Vec3* v, const Vec3* w, const SolverSettings& s,

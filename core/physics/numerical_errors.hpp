@@ -16,7 +16,8 @@ std::string describe_particle(const Model& m, ParticleId p);
 // its bending stiffness 4 EI / L^3 (eq. 3.43) is infinite on a zero-length
 // (or, overflowing, a 1e-100 m) link and its plane undefined. Names the hinge, its beam and the particles
 // that coincide (or the one whose position is not finite).
-[[noreturn]] void throw_degenerate_hinge(const Model& m, const Hinge& h, const Vec3* x);
+[[noreturn]] void throw_degenerate_hinge(const Model& m, const Hinge& h, const Vec3* x,
+                                         const char* done = "no particle was moved");
 
 // The state an integrator was about to write (positions x, velocities v,
 // angular velocities w; null when not computed) is not finite at some

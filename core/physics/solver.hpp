@@ -27,6 +27,7 @@
 #include "physics/beam6_plan.hpp"
 #include "physics/cst_plan.hpp"
 #include "physics/element_shares.hpp"
+#include "physics/hinge_chunks.hpp"
 #include "physics/run_verdict.hpp"
 #include "physics/workers.hpp"
 
@@ -254,7 +255,7 @@ class Solver {
   // that invalidates them, or on request).
   void reset_motion();
   // The bytes a step of the fused bar kernel (Leapfrog or Symplectic Euler
-  // over bars alone) streams, counted as STREAM counts them: every array a
+  // over bars and hinges alone) streams, counted as STREAM counts them: every array a
   // pass reads or writes counts once per pass, write-allocate not counted,
   // reuse within a chunk free. 0 when the step does not take that kernel.
   // bench_throughput divides the triad bandwidth by it: the memory bound.
@@ -274,7 +275,13 @@ class Solver {
   // body left on its thread in the same pass, or evaluates them again.
   static std::uint64_t new_chunk_pass();
   ForceSum* chunk_bar_sums(std::uint32_t c, const Vec3* x, std::uint64_t pass, bool fill_slots) const;
-  const ForceSum* chunk_force_sums(std::uint32_t c, const Vec3* x, std::uint64_t pass) const;
+  ForceSum* chunk_force_sums(std::uint32_t c, const Vec3* x, std::uint64_t pass) const;
+  // The chunk's spline-beam hinges (hinge_chunks.hpp, derived beforehand by
+  // hinge_chunks()) at x added into its sums after chunk_force_sums: the
+  // index among the awake hinges of the first it cannot evaluate (it adds
+  // none from there), else kNone.
+  const HingeChunks& hinge_chunks() const;
+  std::uint32_t chunk_hinge_sums(std::uint32_t c, const Vec3* x, ForceSum* sums) const;
   // body(c) then late(c) for every chunk, the chunks split over the threads
   // in contiguous ranges; a chunk whose inbox draws on an earlier thread's
   // range runs late(c) once every thread finished its range.
@@ -291,8 +298,9 @@ class Solver {
   unsigned element_threads() const;
   bool elements_on_threads() const;  // element_threads() > 1 and element_threads_from reached
   const std::vector<ParticleId>& element_bounds() const;
-  // Leapfrog and Symplectic Euler over bars alone: forces and the kick in
-  // one pass per chunk, then the drift (integrators.cpp).
+  // Leapfrog and Symplectic Euler over bars and spline-beam hinges alone:
+  // forces and the kick in one pass per chunk, then the drift
+  // (integrators.cpp).
   bool fused_kick_drift_applies() const;
   void fused_kick_drift(bool whole_kick);
   void accumulate_joint_forces(const Vec3* x, Vec3* F, double* S) const;  // joints.cpp
@@ -411,6 +419,7 @@ class Solver {
   std::shared_ptr<ProjectiveSystem> projective_;  // projective.hpp, built on first use
   std::shared_ptr<NewtonSystem> newton_;          // newton.hpp, built on first use
   mutable BarChunks bar_chunks_;
+  mutable HingeChunks hinge_chunks_;
   mutable Beam6Plan beam6_plan_;  // forces.cpp: the 6-DOF elements as the step reads them
   mutable std::vector<Couple> couples_;
   mutable std::pair<std::uint64_t, std::uint64_t> couples_at_{~0ull, ~0ull};  // model revision, moment revision
@@ -419,6 +428,7 @@ class Solver {
   struct alignas(64) ChunkSums {
     double ke = 0, momentum2 = 0, residual2 = 0;
     bool bad = false;  // a force, stiffness or mass the step cannot use
+    std::uint32_t bad_hinge = kNone;  // the first hinge it cannot evaluate (chunk_hinge_sums)
   };
   std::vector<ChunkSums> chunk_sums_;
   mutable std::vector<std::uint32_t> thread_first_chunk_;  // for_chunks: each thread's range

@@ -1,0 +1,40 @@
+#pragma once
+// The fused bar step's copy of the awake spline-beam hinges (eq. 3.41-3.43),
+// chunk by chunk of the bar chunks (bar_chunks.hpp), so that a model of
+// bars and 3-DOF beams is kicked chunk by chunk while its forces are still
+// in the cache, as bars alone are:
+// - a chunk lists, in the model's order, every hinge with an end among its
+//   particles; the chunk adds a hinge's forces into those ends only, so a
+//   hinge with ends in two chunks is evaluated by both (a few along each
+//   chunk boundary) and every particle's hinges are summed in the model's
+//   order, after its bars, as the element pass sums them;
+// - only what the force reads: ends, EI and rest curvature, and the hinge's
+//   index among the awake ones to name it when it cannot be evaluated.
+// Derived again whenever the model's revision, its capacity or the chunk
+// size moved.
+#include <cstdint>
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace tendril {
+
+struct HingeChunks {
+  bool current(const Model& m, std::uint32_t shift) const {
+    return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity() && shift_ == shift;
+  }
+  void derive(const Model& m, std::uint32_t shift, std::size_t n_chunks);
+
+  std::vector<std::uint32_t> begin;  // chunks + 1, into the items
+  std::vector<std::uint32_t> hinge;  // per item: its index among the awake hinges
+  std::vector<ParticleId> i, j, k;
+  std::vector<double> EI, rest;
+
+ private:
+  const Model* model_ = nullptr;
+  std::uint64_t revision_ = ~std::uint64_t(0);
+  std::size_t capacity_ = 0;
+  std::uint32_t shift_ = 0;
+};
+
+}  // namespace tendril
