@@ -305,6 +305,26 @@ TENDRIL_SIMD_CLONES void scatter_bars(const BarBlock& b, std::uint32_t n, std::u
   }
 }
 
+// A block of a chunk's hinges into its particles' sums (chunk_hinge_sums),
+// compiled as scatter_bars is, so that each end takes one 4-lane load,
+// addition and store; returns how many it added, stopping at the first
+// hinge that cannot be evaluated.
+TENDRIL_SIMD_CLONES std::uint32_t scatter_hinges(const HingeBlock& hb, std::uint32_t n, const ParticleId* __restrict hi,
+                                                 const ParticleId* __restrict hj, const ParticleId* __restrict hk,
+                                                 Owned<true> own, ForceSum* __restrict sums) {
+  const ParticleId base = own.lo;
+  for (std::uint32_t m = 0; m < n; ++m) {
+    if (!std::isfinite(hb.k[m])) [[unlikely]]
+      return m;
+    const ParticleId i = hi[m], j = hj[m], k = hk[m];
+    if (own(i)) sums[i - base] += ForceSum{hb.fix[m], hb.fiy[m], hb.fiz[m], 0.0};
+    if (own(k)) sums[k - base] += ForceSum{hb.fkx[m], hb.fky[m], hb.fkz[m], 0.0};
+    if (own(j))
+      sums[j - base] -= ForceSum{hb.fix[m] + hb.fkx[m], hb.fiy[m] + hb.fky[m], hb.fiz[m] + hb.fkz[m], -hb.k[m]};
+  }
+  return n;
+}
+
 // Each thread's sums of the chunk it evaluated last, named by the pass and
 // the chunk: a chunk's late part on the same thread right after its body
 // finds them; one deferred to the pass's end (or run on another thread)
@@ -430,16 +450,9 @@ std::uint32_t Solver::chunk_hinge_sums(std::uint32_t chunk, const Vec3* x, Force
       hb.rest[m] = H.rest[e];
     }
     hinge_block(hb, n);
-    for (std::uint32_t m = 0; m < n; ++m) {
-      const std::uint32_t e = e0 + m;
-      if (!std::isfinite(hb.k[m])) [[unlikely]]
-        return H.hinge[e];
-      const ParticleId i = hi[e], j = hj[e], k = hk[e];
-      if (own(i)) sums[i - base] += ForceSum{hb.fix[m], hb.fiy[m], hb.fiz[m], 0.0};
-      if (own(k)) sums[k - base] += ForceSum{hb.fkx[m], hb.fky[m], hb.fkz[m], 0.0};
-      if (own(j))
-        sums[j - base] -= ForceSum{hb.fix[m] + hb.fkx[m], hb.fiy[m] + hb.fky[m], hb.fiz[m] + hb.fkz[m], -hb.k[m]};
-    }
+    const std::uint32_t done = scatter_hinges(hb, n, hi + e0, hj + e0, hk + e0, own, sums);
+    if (done < n) [[unlikely]]
+      return H.hinge[e0 + done];
   }
   return kNone;
 }
