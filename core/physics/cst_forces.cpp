@@ -144,12 +144,34 @@ TENDRIL_SIMD_CLONES void cst_block(CstBlock& t, std::uint32_t n, double gf) {
   }
 }
 
-// One thread's triangles: items[0 .. count) (kShared) or 0 .. count, in the
-// model's order, their forces and G-strings added into the particles it
-// owns, the pulls of its projected corners into their slots.
-template <bool kShared>
+// Where the triangles add: the model's forces and stiffnesses (the element
+// pass), or a chunk's sums (the fused step: each lane on its own, so that
+// a force leaves the stiffness lane untouched and the other way round).
+struct ModelSink {
+  Vec3* F;
+  double* S;
+  void force(ParticleId p, const Vec3& f) const { F[p] += f; }
+  void stiffness(ParticleId p, double s) const { S[p] += s; }
+};
+struct ChunkSink {
+  ForceSum* sums;
+  ParticleId base;
+  void force(ParticleId p, const Vec3& f) const {
+    ForceSum& v = sums[p - base];
+    v[0] += f.x();
+    v[1] += f.y();
+    v[2] += f.z();
+  }
+  void stiffness(ParticleId p, double s) const { sums[p - base][3] += s; }
+};
+
+// One thread's (or chunk's) triangles: items[0 .. count) (kShared) or
+// 0 .. count, in the model's order, their forces and G-strings added into
+// the particles it owns, the pulls of its projected corners into their
+// slots.
+template <bool kShared, class Sink>
 void cst_forces(const CstPlan& plan, const Cst* csts, const std::uint32_t* items, std::uint32_t count,
-                Owned<kShared> own, const Vec3* x, double gf, Vec3* F, double* S, CstCornerSums* sums) {
+                Owned<kShared> own, const Vec3* x, double gf, Sink out, CstCornerSums* sums) {
   const ParticleId *ti = plan.i.data(), *tj = plan.j.data(), *tk = plan.k.data();
   CstBlock tb;
   for (std::uint32_t e0 = 0; e0 < count; e0 += kCstBlock) {
@@ -188,11 +210,11 @@ void cst_forces(const CstPlan& plan, const Cst* csts, const std::uint32_t* items
                             double q) TENDRIL_INLINE {
           if ((along_normal >> cu & 1) && own_u) {
             sums[slot[cu]].smooth += q * uv;
-            S[u] += q;
+            out.stiffness(u, q);
           }
           if ((along_normal >> cv & 1) && own_v) {
             sums[slot[cv]].smooth -= q * uv;
-            S[v] += q;
+            out.stiffness(v, q);
           }
         };
         const double q = plan.g_string[e];
@@ -200,15 +222,15 @@ void cst_forces(const CstPlan& plan, const Cst* csts, const std::uint32_t* items
         g_string(j, 1, own_j, k, 2, own_k, Vec3(tb.cx[m], tb.cy[m], tb.cz[m]), q);
       }
       if (tb.flat[m] != 0) {  // no plane: no force, the elastic stiffness only
-        if (own_i) S[i] += tb.ei[m];
-        if (own_j) S[j] += tb.ej[m];
-        if (own_k) S[k] += tb.ek[m];
+        if (own_i) out.stiffness(i, tb.ei[m]);
+        if (own_j) out.stiffness(j, tb.ej[m]);
+        if (own_k) out.stiffness(k, tb.ek[m]);
         continue;
       }
       const Vec3 nrm(tb.nx[m], tb.ny[m], tb.nz[m]);
       auto add = [&](ParticleId p, int corner, const Vec3& f) TENDRIL_INLINE {
         if (!(along_normal >> corner & 1)) {
-          F[p] += f;
+          out.force(p, f);
           return;
         }
         CstCornerSums& c = sums[slot[corner]];
@@ -218,9 +240,9 @@ void cst_forces(const CstPlan& plan, const Cst* csts, const std::uint32_t* items
       if (own_i) add(i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]));
       if (own_j) add(j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]));
       if (own_k) add(k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]));
-      if (own_i) S[i] += tb.si[m];
-      if (own_j) S[j] += tb.sj[m];
-      if (own_k) S[k] += tb.sk[m];
+      if (own_i) out.stiffness(i, tb.si[m]);
+      if (own_j) out.stiffness(j, tb.sj[m]);
+      if (own_k) out.stiffness(k, tb.sk[m]);
     }
   }
 }
@@ -229,19 +251,22 @@ void cst_forces(const CstPlan& plan, const Cst* csts, const std::uint32_t* items
 // the part of its pull along its normal. A corner in more than one such
 // triangle then adds +0 (in the model's order of triangles it was visited
 // once per triangle, the later visits adding zeros: -0 + 0 is +0). Each
-// slot is cleared for the next call.
-template <bool kShared>
-void project_corners(const CstPlan& plan, Owned<kShared> own, Vec3* F, CstCornerSums* sums) {
-  const std::uint32_t n_slots = std::uint32_t(plan.corner.size());
-  for (std::uint32_t s = 0; s < n_slots; ++s) {
+// slot is cleared for the next call. The slots slots[0 .. count) (a
+// chunk's) or all of them (slots null), those of particles it owns.
+template <bool kShared, class Sink>
+void project_corners(const CstPlan& plan, const std::uint32_t* slots, std::uint32_t count, Owned<kShared> own,
+                     Sink out, CstCornerSums* sums) {
+  if (!slots) count = std::uint32_t(plan.corner.size());
+  for (std::uint32_t n = 0; n < count; ++n) {
+    const std::uint32_t s = slots ? slots[n] : n;
     const ParticleId p = plan.corner[s];
     if (!own(p)) continue;
     CstCornerSums& c = sums[s];
     const Vec3 normal = c.normal, smooth = c.smooth;
     const double nn = normal.squaredNorm();
-    F[p] += smooth;
-    if (nn > 0) F[p] += ((c.pull - smooth).dot(normal) / nn) * normal;
-    if (plan.shared[s]) F[p] += Vec3::Zero();
+    out.force(p, smooth);
+    if (nn > 0) out.force(p, ((c.pull - smooth).dot(normal) / nn) * normal);
+    if (plan.shared[s]) out.force(p, Vec3::Zero());
     c = CstCornerSums{};
   }
 }
@@ -259,8 +284,8 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
   const Cst* csts = model_.csts.awake_begin();  // awake only
   const std::uint32_t n_csts = std::uint32_t(model_.csts.awake_end() - csts);
   if (!elements_on_threads()) {
-    cst_forces<false>(plan, csts, nullptr, n_csts, {}, x, gf, F, S, sums);
-    project_corners<false>(plan, {}, F, sums);
+    cst_forces<false>(plan, csts, nullptr, n_csts, {}, x, gf, ModelSink{F, S}, sums);
+    project_corners<false>(plan, nullptr, 0, {}, ModelSink{F, S}, sums);
     return;
   }
   // On threads: each adds into the particles it owns (ElementShares).
@@ -273,9 +298,49 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
   const ElementShares& sh = cst_shares_;
   workers_->run(unsigned(bound.size()) - 1, [&](unsigned t) {
     const Owned<true> own{bound[t], bound[t + 1]};
-    cst_forces<true>(plan, csts, sh.items.data() + sh.begin[t], sh.begin[t + 1] - sh.begin[t], own, x, gf, F, S, sums);
-    project_corners<true>(plan, own, F, sums);
+    cst_forces<true>(plan, csts, sh.items.data() + sh.begin[t], sh.begin[t + 1] - sh.begin[t], own, x, gf,
+                     ModelSink{F, S}, sums);
+    project_corners<true>(plan, nullptr, 0, own, ModelSink{F, S}, sums);
   });
+}
+
+// The fused step's triangles: the plan, the corners' sums, and each
+// chunk's share of the triangles and of the projected corners (those of
+// its particles), derived before the pass, since the pass runs on threads.
+void Solver::prepare_cst_chunks() const {
+  if (!cst_plan_.current(model_)) cst_plan_.derive(model_);
+  const CstPlan& plan = cst_plan_;
+  if (cst_corner_sums_.size() != plan.corner.size()) cst_corner_sums_.assign(plan.corner.size(), CstCornerSums{});
+  const BarChunks& B = bar_chunks();
+  chunk_bound_.resize(B.chunks.size() + 1);
+  for (std::size_t c = 0; c < chunk_bound_.size(); ++c) chunk_bound_[c] = ParticleId(c) << B.shift;
+  if (!cst_chunk_shares_.current(model_, chunk_bound_))
+    cst_chunk_shares_.derive(model_, chunk_bound_, std::uint32_t(plan.i.size()), [&](std::uint32_t e, ParticleId* at) {
+      at[0] = plan.i[e], at[1] = plan.j[e], at[2] = plan.k[e];
+      return 3;
+    });
+  if (!corner_chunk_shares_.current(model_, chunk_bound_))
+    corner_chunk_shares_.derive(model_, chunk_bound_, std::uint32_t(plan.corner.size()),
+                                [&](std::uint32_t s, ParticleId* at) {
+                                  at[0] = plan.corner[s];
+                                  return 1;
+                                });
+}
+
+// A chunk's triangles into its sums, as the element pass adds them into F
+// and S (per particle the model's order of its triangles, then its
+// projected corner), each lane on its own.
+void Solver::chunk_cst_sums(std::uint32_t chunk, const Vec3* x, ForceSum* sums) const {
+  const std::uint32_t shift = bar_chunks_.shift;
+  const ParticleId base = ParticleId(chunk) << shift;
+  const Owned<true> own{base, base + (ParticleId(1) << shift)};
+  const ChunkSink out{sums, base};
+  const ElementShares &tri = cst_chunk_shares_, &corners = corner_chunk_shares_;
+  CstCornerSums* corner_sums = cst_corner_sums_.data();
+  cst_forces<true>(cst_plan_, model_.csts.awake_begin(), tri.items.data() + tri.begin[chunk],
+                   tri.begin[chunk + 1] - tri.begin[chunk], own, x, settings.geometric_factor, out, corner_sums);
+  project_corners<true>(cst_plan_, corners.items.data() + corners.begin[chunk],
+                        corners.begin[chunk + 1] - corners.begin[chunk], own, out, corner_sums);
 }
 
 }  // namespace tendril

@@ -7,8 +7,11 @@
 // Every particle is thus summed by one thread, in the model's order of its
 // elements, as one thread sums it: the thread count changes the speed,
 // never the numbers. An element with ends on two threads is evaluated by
-// both (a few along each boundary), rather than kept in a buffer.
+// both (a few along each boundary), rather than kept in a buffer. The fused
+// step shares its CST triangles and projected corners out the same way, by
+// chunk instead of by thread.
 // Derived again when the model's revision, its capacity or the split moves.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -33,29 +36,41 @@ struct ElementShares {
     return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity() && bound == split;
   }
   // ends(e, out) writes element e's particles into out[0..3) and returns
-  // how many it has.
+  // how many it has. Also for many parts (the fused step's chunks): each
+  // element is placed once per distinct owner of its ends.
   template <class Ends>
   void derive(const Model& m, const std::vector<ParticleId>& split, std::uint32_t n, Ends ends) {
     bound = split;
-    const unsigned threads = unsigned(bound.size()) - 1;
-    begin.assign(threads + 1, 0);
-    items.clear();
+    const unsigned parts = unsigned(bound.size()) - 1;
+    // The owner of p: how many of bound[1 .. parts) are <= p.
     auto owner = [&](ParticleId p) {
-      unsigned t = 0;
-      while (t + 1 < threads && p >= bound[t + 1]) ++t;
-      return t;
+      return unsigned(std::upper_bound(bound.begin() + 1, bound.end() - 1, p) - (bound.begin() + 1));
     };
-    for (unsigned t = 0; t < threads; ++t) {
-      begin[t] = std::uint32_t(items.size());
-      for (std::uint32_t e = 0; e < n; ++e) {
-        ParticleId at[3];
-        const int k = ends(e, at);
-        bool mine = false;
-        for (int c = 0; c < k; ++c) mine |= owner(at[c]) == t;
-        if (mine) items.push_back(e);
+    auto owners = [&](std::uint32_t e, unsigned (&out)[3]) {
+      ParticleId at[3];
+      const int k = ends(e, at);
+      int distinct = 0;
+      for (int c = 0; c < k; ++c) {
+        const unsigned t = owner(at[c]);
+        bool seen = false;
+        for (int d = 0; d < distinct; ++d) seen |= out[d] == t;
+        if (!seen) out[distinct++] = t;
       }
+      return distinct;
+    };
+    begin.assign(parts + 1, 0);
+    unsigned at_part[3];
+    for (std::uint32_t e = 0; e < n; ++e) {
+      const int d = owners(e, at_part);
+      for (int c = 0; c < d; ++c) ++begin[at_part[c] + 1];
     }
-    begin[threads] = std::uint32_t(items.size());
+    for (unsigned t = 0; t < parts; ++t) begin[t + 1] += begin[t];
+    items.resize(begin[parts]);
+    std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
+    for (std::uint32_t e = 0; e < n; ++e) {
+      const int d = owners(e, at_part);
+      for (int c = 0; c < d; ++c) items[next[at_part[c]]++] = e;
+    }
     model_ = &m;
     revision_ = m.revision;
     capacity_ = m.particles.capacity();

@@ -317,15 +317,15 @@ KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, s
 bool Solver::fused_kick_drift_applies() const {
   // Auto, read between steps (fused_step_bytes): what its next step takes.
   const Integrator i = settings.integrator == Integrator::Auto ? auto_choice_ : settings.integrator;
-  return (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) && model_.beam6s.awake == 0 && model_.joints.items.empty() && model_.goals.empty() &&
-         model_.csts.items.empty() && model_.particles.rotational.empty() && couples().empty() &&
+  return (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) && model_.beam6s.awake == 0 && model_.joints.items.empty() && model_.goals.empty() && model_.particles.rotational.empty() && couples().empty() &&
          model_.clamp_darts.empty() && model_.rigid_joints.empty() && !pressure_acts();
 }
 
-// kick_drift for a model of bars and spline-beam hinges alone, without a
-// separate force pass: each chunk's particles are kicked as soon as their
-// forces are complete (its own bars, its inbox, then its hinges), while
-// they are still in the cache. The
+// kick_drift for a model of bars, spline-beam hinges and CST triangles
+// alone, without a separate force pass: each chunk's particles are kicked
+// as soon as their forces are complete (its own bars, its inbox, its
+// hinges, then its triangles and projected corners), while they are still
+// in the cache. The
 // arithmetic is kick_drift's; sums over particles (kinetic energy) are
 // gathered per chunk and added in chunk order. A force, stiffness or mass
 // the step cannot use is found only after some velocities were kicked:
@@ -344,8 +344,9 @@ bool Solver::fused_kick_drift_applies() const {
 void Solver::fused_kick_drift(bool whole_kick) {
   Particles& P = model_.particles;
   const BarChunks& chunks = bar_chunks();
-  const bool hinged = model_.hinges.awake > 0;
+  const bool hinged = model_.hinges.awake > 0, membranes = model_.csts.awake > 0;
   if (hinged) hinge_chunks();
+  if (membranes) prepare_cst_chunks();
   chunk_sums_.resize(chunks.chunks.size());
   const bool one_pass = P.integrated.size() == P.capacity();
   if (one_pass && xs_.size() != P.capacity()) xs_.resize(P.capacity());
@@ -375,6 +376,7 @@ void Solver::fused_kick_drift(bool whole_kick) {
       chunk_sums_[c] = {0, 0, 0, false, bad_hinge};
       return;
     }
+    if (membranes) chunk_cst_sums(c, x, sums);
     const ParticleId base = ParticleId(c) << chunks.shift;
     const ParticleId* ids = chunks.particles.data();
     const std::uint32_t b = ch.particles_begin, e = ch.particles_end;
@@ -465,9 +467,18 @@ double Solver::fused_step_bytes() const {
   const double elements = bars * (4 + 4 + 8 + 8 + 8 + 1) + crossing * (24 + 8 + 4 + 4 + 24 + 8);
   // Per hinge of a chunk its ends, EI and rest curvature (hinge_chunks.hpp).
   const double hinges = model_.hinges.awake > 0 ? double(hinge_chunks().i.size()) * (4 + 4 + 4 + 8 + 8) : 0.0;
+  // Per triangle of a chunk its index and the plan's ends, stresses,
+  // G-string density, flags and slots; per projected corner its index,
+  // particle, flag and sums read and cleared (cst_plan.hpp).
+  double membranes = 0;
+  if (model_.csts.awake > 0) {
+    prepare_cst_chunks();
+    membranes = double(cst_chunk_shares_.items.size()) * (4 + 12 + 16 + 8 + 1 + 12 + 1) +
+                double(corner_chunk_shares_.items.size()) * (4 + 4 + 1 + 72 + 72);
+  }
   // Two passes: id, position read and written, velocity read.
   const double drift = one_pass ? 0 : particles * (4 + 24 + 24 + 24);
-  return kick + elements + hinges + drift;
+  return kick + elements + hinges + membranes + drift;
 }
 
 void Solver::synchronize_velocities() {

@@ -255,7 +255,7 @@ class Solver {
   // that invalidates them, or on request).
   void reset_motion();
   // The bytes a step of the fused bar kernel (Leapfrog or Symplectic Euler
-  // over bars and hinges alone) streams, counted as STREAM counts them: every array a
+  // over bars, hinges and CST triangles alone) streams, counted as STREAM counts them: every array a
   // pass reads or writes counts once per pass, write-allocate not counted,
   // reuse within a chunk free. 0 when the step does not take that kernel.
   // bench_throughput divides the triad bandwidth by it: the memory bound.
@@ -282,6 +282,11 @@ class Solver {
   // none from there), else kNone.
   const HingeChunks& hinge_chunks() const;
   std::uint32_t chunk_hinge_sums(std::uint32_t c, const Vec3* x, ForceSum* sums) const;
+  // The same for the CST triangles and their projected corners
+  // (cst_forces.cpp), after the hinges; prepare_cst_chunks derives what
+  // the chunks share out beforehand.
+  void prepare_cst_chunks() const;
+  void chunk_cst_sums(std::uint32_t c, const Vec3* x, ForceSum* sums) const;
   // body(c) then late(c) for every chunk, the chunks split over the threads
   // in contiguous ranges; a chunk whose inbox draws on an earlier thread's
   // range runs late(c) once every thread finished its range.
@@ -298,9 +303,9 @@ class Solver {
   unsigned element_threads() const;
   bool elements_on_threads() const;  // element_threads() > 1 and element_threads_from reached
   const std::vector<ParticleId>& element_bounds() const;
-  // Leapfrog and Symplectic Euler over bars and spline-beam hinges alone:
-  // forces and the kick in one pass per chunk, then the drift
-  // (integrators.cpp).
+  // Leapfrog and Symplectic Euler over bars, spline-beam hinges and CST
+  // triangles alone: forces and the kick in one pass per chunk, then the
+  // drift (integrators.cpp).
   bool fused_kick_drift_applies() const;
   void fused_kick_drift(bool whole_kick);
   void accumulate_joint_forces(const Vec3* x, Vec3* F, double* S) const;  // joints.cpp
@@ -434,6 +439,8 @@ class Solver {
   mutable std::vector<std::uint32_t> thread_first_chunk_;  // for_chunks: each thread's range
   mutable std::vector<ParticleId> element_bound_;            // element_bounds
   mutable ElementShares hinge_shares_, beam6_shares_, cst_shares_;
+  mutable ElementShares cst_chunk_shares_, corner_chunk_shares_;  // the fused step's: by chunk
+  mutable std::vector<ParticleId> chunk_bound_;                     // the chunks' first ids, and the end
   mutable std::vector<std::uint32_t> thread_bad_hinge_;  // per thread: its first degenerate hinge
   bool projective_low_rank_ = true;
   bool mixed_implicit_ = false;      // Mixed: in its implicit phase

@@ -95,8 +95,10 @@ namespace {
 // A 40 x 40 grid of 3-DOF spline beams along its rows and columns (1600
 // particles, two chunks of 1024 ids: the columns' hinges at rows 25 and 26
 // have ends in both), one more beam across the grid with its ids falling,
-// two edges locked, loaded out of plane and along x.
-std::unique_ptr<Model> beam_grid() {
+// two edges locked, loaded out of plane and along x; with `membrane` 1 or 2
+// a CST patch over the grid too, in form-finding or in analysis (its
+// triangles and projected corners on both sides of the chunks' boundary).
+std::unique_ptr<Model> beam_grid(int membrane) {
   constexpr int s = 40;
   auto m = std::make_unique<Model>();
   std::vector<ParticleId> g;
@@ -107,6 +109,21 @@ std::unique_ptr<Model> beam_grid() {
       if (r == 0 || r == s - 1) m->set_lock(p, kLockTranslation);
       else m->set_load(p, Vec3(0.05 * (c % 3), 0, -1));
     }
+  if (membrane > 0) {
+    const BlockId patch = m->add_quad_grid(g, s, s, Section{1e4, 0, 1e2, 0});
+    std::vector<Model::Triangle> triangles;
+    for (int r = 0; r + 1 < s; ++r)
+      for (int c = 0; c + 1 < s; ++c) {
+        const ParticleId a = g[r * s + c], b = g[r * s + c + 1], cc = g[(r + 1) * s + c + 1], d = g[(r + 1) * s + c];
+        triangles.push_back({a, b, cc});
+        triangles.push_back({cc, d, a});
+      }
+    Membrane film;
+    film.mode = membrane == 2 ? Membrane::Analysis : Membrane::FormFinding;
+    film.sigma_warp = 300, film.sigma_weft = 200;
+    if (membrane == 2) film.dxx = 800, film.dyy = 500, film.dxy = 100, film.dyx = 100, film.G = 30;
+    m->set_patch_formulation(patch, film, triangles);
+  }
   const Section section{1e5, 20, 0, 0};
   for (int r = 0; r < s; ++r) m->add_beam(std::vector<ParticleId>(g.begin() + r * s, g.begin() + (r + 1) * s), section);
   for (int c = 0; c < s; ++c) {
@@ -124,41 +141,46 @@ std::unique_ptr<Model> beam_grid() {
 
 }  // namespace
 
-TEST_CASE("fused step: spline-beam hinges are summed as the element pass sums them, on any thread count") {
-  for (Integrator integrator : {Integrator::Leapfrog, Integrator::SymplecticEuler}) {
-    CAPTURE(integrator_name(integrator));
-    std::vector<Vec3> x1, v1;
-    std::uint64_t resets1 = 0;
-    for (int threads : {1, 2, 3}) {
-      CAPTURE(threads);
-      auto m = beam_grid();
-      Particles& P = m->particles;
-      Solver s(*m);
-      s.settings.integrator = integrator;
-      s.settings.threads = threads;
-      REQUIRE(s.fused_step_bytes() > 0);  // the fused step takes this model
-      for (int k = 0; k < 300; ++k) {
-        const std::vector<Vec3> before = P.position.raw();
-        s.step();
-        if (k % 50 != 0) continue;
-        // The forces and stiffnesses the fused step kicked with are those
-        // of the element pass (bars, then hinges) at the step's positions.
-        const std::vector<Vec3> after = P.position.raw(), fused_F = P.force.raw();
-        const std::vector<double> fused_S = P.stiffness.raw();
-        P.position.raw() = before;
-        s.compute_forces();
-        CHECK(P.force.raw() == fused_F);
-        CHECK(P.stiffness.raw() == fused_S);
-        P.position.raw() = after;
-      }
-      CHECK(m->check() == "");
-      if (threads == 1) {
-        x1 = P.position.raw(), v1 = P.velocity.raw(), resets1 = s.kinetic_resets();
-        REQUIRE(resets1 > 0);  // the kinetic peaks' move back was exercised
-      } else {
-        CHECK(P.position.raw() == x1);
-        CHECK(P.velocity.raw() == v1);
-        CHECK(s.kinetic_resets() == resets1);
+TEST_CASE("fused step: hinges and CST triangles are summed as the element pass sums them, on any thread count") {
+  for (int membrane : {0, 1, 2}) {
+    for (Integrator integrator : {Integrator::Leapfrog, Integrator::SymplecticEuler}) {
+      const std::string name = std::string(integrator_name(integrator)) +
+                               (membrane == 0 ? "" : membrane == 1 ? ", CST form-finding" : ", CST analysis");
+      CAPTURE(name);
+      std::vector<Vec3> x1, v1;
+      std::uint64_t resets1 = 0;
+      for (int threads : {1, 2, 3}) {
+        CAPTURE(threads);
+        auto m = beam_grid(membrane);
+        Particles& P = m->particles;
+        Solver s(*m);
+        s.settings.integrator = integrator;
+        s.settings.threads = threads;
+        REQUIRE(s.fused_step_bytes() > 0);  // the fused step takes this model
+        for (int k = 0; k < 200; ++k) {
+          const std::vector<Vec3> before = P.position.raw();
+          s.step();
+          if (k % 50 != 0) continue;
+          // The forces and stiffnesses the fused step kicked with are those
+          // of the element pass (bars, hinges, then triangles) at the
+          // step's positions.
+          const std::vector<Vec3> after = P.position.raw(), fused_F = P.force.raw();
+          const std::vector<double> fused_S = P.stiffness.raw();
+          P.position.raw() = before;
+          s.compute_forces();
+          CHECK(P.force.raw() == fused_F);
+          CHECK(P.stiffness.raw() == fused_S);
+          P.position.raw() = after;
+        }
+        CHECK(m->check() == "");
+        if (threads == 1) {
+          x1 = P.position.raw(), v1 = P.velocity.raw(), resets1 = s.kinetic_resets();
+          REQUIRE(resets1 > 0);  // the kinetic peaks' move back was exercised
+        } else {
+          CHECK(P.position.raw() == x1);
+          CHECK(P.velocity.raw() == v1);
+          CHECK(s.kinetic_resets() == resets1);
+        }
       }
     }
   }
