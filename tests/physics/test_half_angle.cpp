@@ -1,4 +1,5 @@
-// The half angle's sine and cosine (model/half_angle.hpp): over a dense sweep of
+// The half angle's sine and cosine (model/half_angle.hpp), the polynomials
+// rotation_of and the frames' drift turn frames with: over a dense sweep of
 // [-0.5, 0.5] (kHalfAngleBound) never more than one double away from glibc's
 // sin and cos, within 0.62 ulp (sine) and 0.70 ulp (cosine) of the true value
 // (a long double reference; measured 0.61 and 0.69), sin^2 + cos^2 within
@@ -14,6 +15,7 @@
 #include <cstring>
 #include <limits>
 
+#include "model/frames.hpp"
 #include "model/half_angle.hpp"
 
 using namespace tendril;
@@ -95,4 +97,15 @@ TEST_CASE("half angle: edge values and libm beyond the bound") {
   half_angle_sincos(std::numeric_limits<double>::quiet_NaN(), s, c);
   CHECK(std::isnan(s));
   CHECK(std::isnan(c));
+  // rotation_of turns by these: its w is cos(|r| / 2), its vector part
+  // sin(|r| / 2) / |r| r, on both sides of the bound.
+  for (double t : {0.3, 0.999, 1.0, std::nextafter(1.0, 2.0), 2.5}) {
+    const Vec3 r = t * Vec3(2, -1, 2) / 3;
+    const double theta = std::sqrt(r.squaredNorm());
+    half_angle_sincos(0.5 * theta, s, c);
+    const Quat q = rotation_of(r);
+    CHECK(q.w() == c);
+    CHECK(q.x() == (s / theta) * r.x());
+    CHECK(q.z() == (s / theta) * r.z());
+  }
 }
