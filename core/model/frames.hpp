@@ -5,6 +5,7 @@
 // A frame is a rotation matrix whose columns are the local x, y, z axes.
 #include <cmath>
 
+#include "model/half_angle.hpp"
 #include "model/types.hpp"
 
 namespace tendril {
@@ -25,8 +26,10 @@ inline Quat rotation_of(const Vec3& r) {
     return q;
   }
   const double theta = std::sqrt(theta2);
-  const double s = std::sin(0.5 * theta) / theta;
-  return Quat(std::cos(0.5 * theta), s * r.x(), s * r.y(), s * r.z());
+  double sin_half, cos_half;
+  half_angle_sincos(0.5 * theta, sin_half, cos_half);  // as frame_drift.cpp's blocks
+  const double s = sin_half / theta;
+  return Quat(cos_half, s * r.x(), s * r.y(), s * r.z());
 }
 
 // The frame with x along `x` and y as close to `ref` as x allows; false when

@@ -1,18 +1,20 @@
 // The frames' drift in vectorised blocks (frame_drift.hpp): per particle
-// the rotation vector r = dt w, its angle and the C library's sine and
-// cosine of half of it; then one loop without branches for the rotation's
-// quaternion, its product with the frame and the normalization, written out
-// as Eigen computes them with SSE2 (Geometry_SIMD.h's quat_product, a
-// 4-vector's squaredNorm as (x x + z z) + (y y + w w)), so the frames are
-// those of rotation_of and Quaternion::normalized bit for bit
-// (tests/physics/test_beam6_block.cpp). A rotation below rotation_of's
-// small-angle bound takes rotation_of itself.
+// the rotation vector r = dt w and its squared angle; then, in loops without
+// branches, the angle, the sine and cosine of half of it by polynomials
+// (model/half_angle.hpp; a lane beyond their bound takes libm's, one at a
+// time), the rotation's quaternion, its product with the frame and the
+// normalization, written out as Eigen computes them with SSE2
+// (Geometry_SIMD.h's quat_product, a 4-vector's squaredNorm as
+// (x x + z z) + (y y + w w)), so the frames are those of rotation_of and
+// Quaternion::normalized bit for bit (tests/physics/test_beam6_block.cpp).
+// A rotation below rotation_of's small-angle bound takes rotation_of itself.
 #include "physics/frame_drift.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "model/frames.hpp"
+#include "model/half_angle.hpp"
 #include "physics/simd_clones.hpp"
 
 namespace tendril {
@@ -26,6 +28,27 @@ struct FrameBlock {
   alignas(64) double sin_half[kFrameBlock], cos_half[kFrameBlock];
   alignas(64) double qx[kFrameBlock], qy[kFrameBlock], qz[kFrameBlock], qw[kFrameBlock];
 };
+
+// theta holds the squared angles on entry, the angles on return; rotation_of's
+// half_angle_sincos, the polynomial in every lane and libm's where the half
+// angle is beyond the polynomials' bound (or not a number).
+TENDRIL_SIMD_CLONES void half_angles(FrameBlock& f, std::uint32_t n) {
+  double beyond = 0;  // how many lanes are beyond: a count of 64 at most, exact
+#pragma omp simd reduction(+ : beyond)
+  for (std::uint32_t m = 0; m < n; ++m) {
+    const double theta = std::sqrt(f.theta[m]);
+    const double h = 0.5 * theta;
+    double s, c;
+    half_angle_poly(h, s, c);
+    f.theta[m] = theta, f.sin_half[m] = s, f.cos_half[m] = c;
+    beyond += h <= kHalfAngleBound ? 0.0 : 1.0;
+  }
+  if (beyond == 0) return;
+  for (std::uint32_t m = 0; m < n; ++m) {
+    const double h = 0.5 * f.theta[m];
+    if (!(h <= kHalfAngleBound)) half_angle_sincos(h, f.sin_half[m], f.cos_half[m]);
+  }
+}
 
 TENDRIL_SIMD_CLONES void frame_block(FrameBlock& f, std::uint32_t n) {
 #pragma omp simd
@@ -64,14 +87,12 @@ void drift_frames(const ParticleId* ids, std::uint32_t n, const std::uint8_t* ac
         R[p] = Quat(rotation_of(r) * R[p]).normalized();
         continue;
       }
-      const double theta = std::sqrt(theta2);
-      f.rx[k] = r.x(), f.ry[k] = r.y(), f.rz[k] = r.z(), f.theta[k] = theta;
-      f.sin_half[k] = std::sin(0.5 * theta);
-      f.cos_half[k] = std::cos(0.5 * theta);
+      f.rx[k] = r.x(), f.ry[k] = r.y(), f.rz[k] = r.z(), f.theta[k] = theta2;
       const Quat& q = R[p];
       f.qx[k] = q.x(), f.qy[k] = q.y(), f.qz[k] = q.z(), f.qw[k] = q.w();
       at[k++] = p;
     }
+    half_angles(f, k);
     frame_block(f, k);
     for (std::uint32_t m = 0; m < k; ++m) R[at[m]] = Quat(f.qw[m], f.qx[m], f.qy[m], f.qz[m]);
   }
