@@ -19,6 +19,29 @@ inline std::vector<Model::Triangle> triangles_of(const Model& m, BlockId patch, 
   return out;
 }
 
+// The CST triangles of an s x s grid of particles g (row by row): each
+// quad (r, c) split along its diagonal from (r, c) to (r + 1, c + 1).
+inline std::vector<Model::Triangle> grid_triangles(const std::vector<ParticleId>& g, int s) {
+  std::vector<Model::Triangle> out;
+  for (int r = 0; r + 1 < s; ++r)
+    for (int c = 0; c + 1 < s; ++c) {
+      const ParticleId a = g[r * s + c], b = g[r * s + c + 1], cc = g[(r + 1) * s + c + 1], d = g[(r + 1) * s + c];
+      out.push_back({a, b, cc});
+      out.push_back({cc, d, a});
+    }
+  return out;
+}
+
+// A film prestressed 300 and 200 N/m (warp, weft), in form-finding or, with
+// an orthotropic elastic law, in analysis.
+inline Membrane test_film(bool analysis) {
+  Membrane film;
+  film.mode = analysis ? Membrane::Analysis : Membrane::FormFinding;
+  film.sigma_warp = 300, film.sigma_weft = 200;
+  if (analysis) film.dxx = 800, film.dyy = 500, film.dxy = 100, film.dyx = 100, film.G = 30;
+  return film;
+}
+
 // A tube of `around` x `rows` quads between two fixed coaxial rings of
 // radius 1 at z = -0.5 and z = 0.5, interior particles on the cylinder.
 struct Tube {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cst_scenes.hpp"
 #include "model/model.hpp"
 #include "physics/solver.hpp"
 
@@ -111,18 +112,7 @@ std::unique_ptr<Model> beam_grid(int membrane) {
     }
   if (membrane > 0) {
     const BlockId patch = m->add_quad_grid(g, s, s, Section{1e4, 0, 1e2, 0});
-    std::vector<Model::Triangle> triangles;
-    for (int r = 0; r + 1 < s; ++r)
-      for (int c = 0; c + 1 < s; ++c) {
-        const ParticleId a = g[r * s + c], b = g[r * s + c + 1], cc = g[(r + 1) * s + c + 1], d = g[(r + 1) * s + c];
-        triangles.push_back({a, b, cc});
-        triangles.push_back({cc, d, a});
-      }
-    Membrane film;
-    film.mode = membrane == 2 ? Membrane::Analysis : Membrane::FormFinding;
-    film.sigma_warp = 300, film.sigma_weft = 200;
-    if (membrane == 2) film.dxx = 800, film.dyy = 500, film.dxy = 100, film.dyx = 100, film.G = 30;
-    m->set_patch_formulation(patch, film, triangles);
+    m->set_patch_formulation(patch, test::test_film(membrane == 2), test::grid_triangles(g, s));
   }
   const Section section{1e5, 20, 0, 0};
   for (int r = 0; r < s; ++r) m->add_beam(std::vector<ParticleId>(g.begin() + r * s, g.begin() + (r + 1) * s), section);

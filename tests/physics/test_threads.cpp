@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cst_scenes.hpp"
 #include "model/model.hpp"
 #include "physics/solver.hpp"
 
@@ -72,18 +73,7 @@ std::unique_ptr<Model> elements(int s, bool analysis) {
       else m->set_load(p, Vec3(0.05 * (c % 3), 0, -1));
     }
   const BlockId patch = m->add_quad_grid(g, s, s, Section{1e4, 0, 1e2, 0});
-  std::vector<Model::Triangle> triangles;
-  for (int r = 0; r + 1 < s; ++r)
-    for (int c = 0; c + 1 < s; ++c) {
-      const ParticleId a = g[r * s + c], b = g[r * s + c + 1], cc = g[(r + 1) * s + c + 1], d = g[(r + 1) * s + c];
-      triangles.push_back({a, b, cc});
-      triangles.push_back({cc, d, a});
-    }
-  Membrane film;
-  film.mode = analysis ? Membrane::Analysis : Membrane::FormFinding;
-  film.sigma_warp = 300, film.sigma_weft = 200;
-  if (analysis) film.dxx = 800, film.dyy = 500, film.dxy = 100, film.dyx = 100, film.G = 30;
-  m->set_patch_formulation(patch, film, triangles);
+  m->set_patch_formulation(patch, test::test_film(analysis), test::grid_triangles(g, s));
   for (int r = 1; r < s - 1; ++r)
     m->add_beam(std::vector<ParticleId>(g.begin() + r * s, g.begin() + (r + 1) * s), Section{1e5, 20, 0, 0});
   for (int c = 4; c < s - 1; c += 4) {
