@@ -317,17 +317,17 @@ KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, s
 bool Solver::fused_kick_drift_applies() const {
   // Auto, read between steps (fused_step_bytes): what its next step takes.
   const Integrator i = settings.integrator == Integrator::Auto ? auto_choice_ : settings.integrator;
-  return (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) && model_.beam6s.awake == 0 && model_.joints.items.empty() && model_.goals.empty() && model_.particles.rotational.empty() && couples().empty() &&
-         model_.clamp_darts.empty() && model_.rigid_joints.empty() && !pressure_acts();
+  return (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) && model_.beam6s.awake == 0 &&
+         model_.joints.items.empty() && model_.goals.empty() && model_.particles.rotational.empty() &&
+         couples().empty() && model_.clamp_darts.empty() && model_.rigid_joints.empty() && !pressure_acts();
 }
 
 // kick_drift for a model of bars, spline-beam hinges and CST triangles
 // alone, without a separate force pass: each chunk's particles are kicked
 // as soon as their forces are complete (its own bars, its inbox, its
 // hinges, then its triangles and projected corners), while they are still
-// in the cache. The
-// arithmetic is kick_drift's; sums over particles (kinetic energy) are
-// gathered per chunk and added in chunk order. A force, stiffness or mass
+// in the cache. The arithmetic is kick_drift's; sums over particles
+// (kinetic energy) are gathered per chunk and added in chunk order. A force, stiffness or mass
 // the step cannot use is found only after some velocities were kicked:
 // the velocities are reset, prepare_masses names the particle as for the
 // other integrators, and no particle was moved.
@@ -400,7 +400,8 @@ void Solver::fused_kick_drift(bool whole_kick) {
   }
   if (bad_hinge != kNone) [[unlikely]] {
     reset_motion();
-    throw_degenerate_hinge(model_, model_.hinges.awake_begin()[bad_hinge], x, "velocities were reset, no particle was moved");
+    throw_degenerate_hinge(model_, model_.hinges.awake_begin()[bad_hinge], x,
+                           "velocities were reset, no particle was moved");
   }
   if (bad) [[unlikely]] {
     reset_motion();
