@@ -192,3 +192,32 @@ TEST_CASE("fused step: another integrator takes over after it (its scratch sized
     CHECK(m->check() == "");
   }
 }
+
+TEST_CASE("fused step: a zero-length link across two chunks stops the step naming its first hinge, nothing moved") {
+  // Particles 1023 and 1024 (row 25 of the grid) lie in two chunks: both
+  // chunks find the hinges through that link; the first in the model's
+  // order, at particle 1023, is named.
+  auto m = beam_grid(0);
+  Particles& P = m->particles;
+  Solver s(*m);
+  for (int k = 0; k < 20; ++k) s.step();
+  P.position[1024] = P.position[1023];
+  const std::vector<Vec3> positions = P.position.raw();
+  std::string what;
+  try {
+    s.step();
+  } catch (const NumericalError& e) {
+    what = e.what();
+  }
+  MESSAGE(what);
+  CHECK(what.find("at particle 1023") != std::string::npos);
+  CHECK(what.find("particles 1023 and 1024 coincide") != std::string::npos);
+  CHECK(what.find("velocities were reset, no particle was moved") != std::string::npos);
+  CHECK(P.position.raw() == positions);
+  for (std::size_t p = 0; p < P.capacity(); ++p) {
+    CHECK(P.velocity[p] == Vec3::Zero());
+    CHECK(P.force[p].allFinite());
+    CHECK(std::isfinite(P.stiffness[p]));
+  }
+  CHECK(m->check() == "");
+}
