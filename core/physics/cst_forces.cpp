@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "physics/cst_plan.hpp"
+#include "physics/element_sinks.hpp"
 #include "physics/simd_clones.hpp"
 #include "physics/solver.hpp"
 
@@ -143,27 +144,6 @@ TENDRIL_SIMD_CLONES void cst_block(CstBlock& t, std::uint32_t n, double gf) {
     t.sk[m] = e2 + g * aa;
   }
 }
-
-// Where the triangles add: the model's forces and stiffnesses (the element
-// pass), or a chunk's sums (the fused step: each lane on its own, so that
-// a force leaves the stiffness lane untouched and the other way round).
-struct ModelSink {
-  Vec3* F;
-  double* S;
-  void force(ParticleId p, const Vec3& f) const { F[p] += f; }
-  void stiffness(ParticleId p, double s) const { S[p] += s; }
-};
-struct ChunkSink {
-  ForceSum* sums;
-  ParticleId base;
-  void force(ParticleId p, const Vec3& f) const {
-    ForceSum& v = sums[p - base];
-    v[0] += f.x();
-    v[1] += f.y();
-    v[2] += f.z();
-  }
-  void stiffness(ParticleId p, double s) const { sums[p - base][3] += s; }
-};
 
 // One thread's (or chunk's) triangles: items[0 .. count) (kShared) or
 // 0 .. count, in the model's order, their forces and G-strings added into
@@ -311,9 +291,7 @@ void Solver::prepare_cst_chunks() const {
   if (!cst_plan_.current(model_)) cst_plan_.derive(model_);
   const CstPlan& plan = cst_plan_;
   if (cst_corner_sums_.size() != plan.corner.size()) cst_corner_sums_.assign(plan.corner.size(), CstCornerSums{});
-  const BarChunks& B = bar_chunks();
-  chunk_bound_.resize(B.chunks.size() + 1);
-  for (std::size_t c = 0; c < chunk_bound_.size(); ++c) chunk_bound_[c] = ParticleId(c) << B.shift;
+  const std::vector<ParticleId>& chunk_bound_ = chunk_bounds();
   if (!cst_chunk_shares_.current(model_, chunk_bound_))
     cst_chunk_shares_.derive(model_, chunk_bound_, std::uint32_t(plan.i.size()), [&](std::uint32_t e, ParticleId* at) {
       at[0] = plan.i[e], at[1] = plan.j[e], at[2] = plan.k[e];

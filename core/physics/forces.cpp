@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "physics/element_forces.hpp"
+#include "physics/element_sinks.hpp"
 #include "physics/numerical_errors.hpp"
 #include "physics/simd_clones.hpp"
 #include "physics/solver.hpp"
@@ -233,10 +234,11 @@ std::uint32_t hinge_forces(const Hinge* hinges, const std::uint32_t* items, std:
   return kNone;
 }
 
-// One thread's 6-DOF elements, as hinge_forces.
-template <bool kShared>
+// One thread's (or chunk's) 6-DOF elements, as hinge_forces, into `out`
+// (element_sinks.hpp). F - f is F + (-f) exactly.
+template <bool kShared, class Sink>
 void beam6_forces(const Beam6Plan& plan, const Beam6* beams, const std::uint32_t* items, std::uint32_t count,
-                  Owned<kShared> own, const Vec3* x, const Quat* q, double gf, Vec3* F, double* S, Vec3* T, double* K) {
+                  Owned<kShared> own, const Vec3* x, const Quat* q, double gf, Sink out) {
   Beam6Block bb;
   for (std::uint32_t e0 = 0; e0 < count; e0 += kBeam6Block) {
     const std::uint32_t n = std::min(kBeam6Block, count - e0);
@@ -268,14 +270,14 @@ void beam6_forces(const Beam6Plan& plan, const Beam6* beams, const std::uint32_t
         r.tb = Vec3(bb.tbx[m], bb.tby[m], bb.tbz[m]);
       }
       const bool own_i = own(i), own_j = own(j);
-      if (own_i) S[i] += r.k;
-      if (own_j) S[j] += r.k;
-      if (own_i) K[i] += r.kr;
-      if (own_j) K[j] += r.kr;
-      if (own_i) F[i] -= r.fj;
-      if (own_j) F[j] += r.fj;
-      if (own_i) T[i] += r.ta;
-      if (own_j) T[j] += r.tb;
+      if (own_i) out.stiffness(i, r.k);
+      if (own_j) out.stiffness(j, r.k);
+      if (own_i) out.rot_stiffness(i, r.kr);
+      if (own_j) out.rot_stiffness(j, r.kr);
+      if (own_i) out.force(i, -r.fj);
+      if (own_j) out.force(j, r.fj);
+      if (own_i) out.torque(i, r.ta);
+      if (own_j) out.torque(j, r.tb);
     }
   }
 }
@@ -457,6 +459,60 @@ std::uint32_t Solver::chunk_hinge_sums(std::uint32_t chunk, const Vec3* x, Force
   return kNone;
 }
 
+const std::vector<ParticleId>& Solver::chunk_bounds() const {
+  const BarChunks& B = bar_chunks();
+  chunk_bound_.resize(B.chunks.size() + 1);
+  for (std::size_t c = 0; c < chunk_bound_.size(); ++c) chunk_bound_[c] = ParticleId(c) << B.shift;
+  return chunk_bound_;
+}
+
+void Solver::prepare_beam6_chunks() const {
+  if (!beam6_plan_.current(model_)) beam6_plan_.derive(model_);
+  const Beam6Plan& plan = beam6_plan_;
+  const std::vector<ParticleId>& bound = chunk_bounds();
+  if (!beam6_chunk_shares_.current(model_, bound))
+    beam6_chunk_shares_.derive(model_, bound, std::uint32_t(plan.i.size()), [&](std::uint32_t e, ParticleId* at) {
+      at[0] = plan.i[e], at[1] = plan.j[e];
+      return 2;
+    });
+  const std::vector<ParticleId>& rotating = model_.particles.rotational.raw();
+  if (!rotating_chunk_shares_.current(model_, bound)) {
+    rotating_chunk_shares_.derive(model_, bound, std::uint32_t(rotating.size()), [&](std::uint32_t e, ParticleId* at) {
+      at[0] = rotating[e];
+      return 1;
+    });
+    rotating_by_chunk_.resize(rotating_chunk_shares_.items.size());
+    for (std::size_t k = 0; k < rotating_by_chunk_.size(); ++k)
+      rotating_by_chunk_[k] = rotating[rotating_chunk_shares_.items[k]];
+  }
+}
+
+namespace {
+// Each thread's torque sums of the chunk it evaluated last (as its force
+// sums, ChunkSumsScratch).
+thread_local std::vector<ChunkSumsScratch::Slot> chunk_turns_scratch;
+}  // namespace
+
+ForceSum* Solver::chunk_beam6_sums(std::uint32_t chunk, const Vec3* x, const Quat* q, ForceSum* sums) const {
+  const std::uint32_t shift = bar_chunks_.shift;
+  const ParticleId base = ParticleId(chunk) << shift;
+  if (chunk_turns_scratch.size() < (std::size_t(1) << shift)) chunk_turns_scratch.resize(std::size_t(1) << shift);
+  ForceSum* turns = &chunk_turns_scratch.data()->sum;
+  // The torques start at the moments, the rotational stiffnesses at 0.
+  const Vec3* moment = model_.particles.moment.data();
+  const ElementShares& rot = rotating_chunk_shares_;
+  for (std::uint32_t k = rot.begin[chunk]; k < rot.begin[chunk + 1]; ++k) {
+    const ParticleId p = rotating_by_chunk_[k];
+    turns[p - base] = ForceSum{moment[p].x(), moment[p].y(), moment[p].z(), 0.0};
+  }
+  const ElementShares& sh = beam6_chunk_shares_;
+  const Owned<true> own{base, base + (ParticleId(1) << shift)};
+  beam6_forces<true>(beam6_plan_, model_.beam6s.awake_begin(), sh.items.data() + sh.begin[chunk],
+                     sh.begin[chunk + 1] - sh.begin[chunk], own, x, q, settings.geometric_factor,
+                     ChunkSink{sums, base, turns});
+  return turns;
+}
+
 unsigned Solver::split_chunks() const {
   const BarChunks& B = bar_chunks_;
   const std::uint32_t n = std::uint32_t(B.chunks.size());
@@ -585,7 +641,7 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
       if (n_beam6s > 0) {
         const ElementShares& sh = beam6_shares_;
         beam6_forces<true>(plan, beam6s, sh.items.data() + sh.begin[t], sh.begin[t + 1] - sh.begin[t], own, x, q, gf,
-                           F, S, T, K);
+                           ModelSink{F, S, T, K});
       }
     });
     const std::uint32_t first_bad = *std::min_element(bad.begin(), bad.end());
@@ -595,7 +651,7 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
     const std::uint32_t bad = hinge_forces<false>(hinges, nullptr, n_hinges, {}, x, F, S);
     if (bad != kNone) [[unlikely]]
       throw_degenerate_hinge(model_, hinges[bad], x);  // a zero-length link (coincident particles): stop, naming them
-    if (n_beam6s > 0) beam6_forces<false>(plan, beam6s, nullptr, n_beam6s, {}, x, q, gf, F, S, T, K);
+    if (n_beam6s > 0) beam6_forces<false>(plan, beam6s, nullptr, n_beam6s, {}, x, q, gf, ModelSink{F, S, T, K});
   }
   accumulate_couples(x, F);  // moments on 3-DOF particles (couples.cpp)
   for (Dart d : model_.clamp_darts.raw()) {  // clamped 3-DOF beam ends (Model::set_clamp)

@@ -163,6 +163,34 @@ KickTotals kick_pass(const KickPass& a, bool prepare, bool physical, double so_f
 
 }  // namespace
 
+// A half element of line mass mu and length L turning about its node:
+// mu L^3 / 24, the same about every axis (isotropic, thesis 3.2.4.2).
+void Solver::sum_rotary_inertia() {
+  for (ParticleId p : model_.particles.rotational.raw()) inertia_[p] = 0;
+  for (const Beam6* b = model_.beam6s.awake_begin(); b != model_.beam6s.awake_end(); ++b) {
+    const double I = b->line_mass * b->rest_length * b->rest_length * b->rest_length / 24;
+    inertia_[b->i] += I;
+    inertia_[b->j] += I;
+  }
+}
+
+// Past a kinetic peak the frames turn back by the interpolation of their
+// rotation vector that moves the positions back (eq. 3.29-3.31).
+void Solver::turn_frames_back(double q) {
+  Particles& P = model_.particles;
+  const std::uint8_t *active = P.active.data(), *lock = P.lock.data();
+  const Vec3* T = P.torque.data();
+  Vec3* w = P.angular_velocity.data();
+  Quat* R = P.orientation.data();
+  const double dt = settings.dt;
+  for (ParticleId p : P.rotational.raw()) {
+    if (!active[p]) continue;
+    const Vec3 Tf = T[p].cwiseProduct(free_rotation_axes(lock[p]));
+    R[p] = turned(-dt * q * w[p] + 0.5 * dt * dt * q * Tf / inertia_[p], R[p]);
+    w[p].setZero();
+  }
+}
+
 // `prepare`: the masses of eq. 3.4 (or the physical ones) found in the
 // kick's pass, as fused_kick_drift does for bars alone, each particle's
 // force, stiffness and mass checked and used while in the cache; the
@@ -191,16 +219,7 @@ void Solver::kick_drift(bool whole_kick, bool prepare) {
   Vec3* w = P.angular_velocity.data();
   const Vec3* T = P.torque.data();
   const double* inertia = inertia_.data();
-  if (prepare && physical && !rotating.empty()) {
-    // A half element of line mass mu and length L turning about its node:
-    // mu L^3 / 24, the same about every axis (isotropic, thesis 3.2.4.2).
-    for (ParticleId p : rotating) inertia_[p] = 0;
-    for (const Beam6* b = model_.beam6s.awake_begin(); b != model_.beam6s.awake_end(); ++b) {
-      const double I = b->line_mass * b->rest_length * b->rest_length * b->rest_length / 24;
-      inertia_[b->i] += I;
-      inertia_[b->j] += I;
-    }
-  }
+  if (prepare && physical && !rotating.empty()) sum_rotary_inertia();
   const KickTotals rotated = kick_pass({rotating.data(), std::uint32_t(rotating.size()), active, lock, 3, T,
                                         P.rot_stiffness.data(), inertia_.data(), nullptr, inertia_.data(), w,
                                        mass_scale, keep, first * B * dt},
@@ -233,12 +252,7 @@ void Solver::kick_drift(bool whole_kick, bool prepare) {
       x[p] += dt * v[p] - dt * (1 + q) * v[p] + 0.5 * dt * dt * q * Ff / mass[p];
       v[p].setZero();
     }
-    for (ParticleId p : rotating) {
-      if (!active[p]) continue;
-      const Vec3 Tf = T[p].cwiseProduct(free_rotation_axes(lock[p]));
-      R[p] = turned(-dt * q * w[p] + 0.5 * dt * dt * q * Tf / inertia[p], R[p]);
-      w[p].setZero();
-    }
+    turn_frames_back(q);
     record_reset();
     return;
   }
@@ -317,9 +331,9 @@ KickSums kick_particles(const ParticleId* __restrict ids, std::uint32_t begin, s
 bool Solver::fused_kick_drift_applies() const {
   // Auto, read between steps (fused_step_bytes): what its next step takes.
   const Integrator i = settings.integrator == Integrator::Auto ? auto_choice_ : settings.integrator;
-  return (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) && model_.beam6s.awake == 0 &&
-         model_.joints.items.empty() && model_.goals.empty() && model_.particles.rotational.empty() &&
-         couples().empty() && model_.clamp_darts.empty() && model_.rigid_joints.empty() && !pressure_acts();
+  return (i == Integrator::Leapfrog || i == Integrator::SymplecticEuler) && model_.joints.items.empty() &&
+         model_.goals.empty() && couples().empty() && model_.clamp_darts.empty() && model_.rigid_joints.empty() &&
+         !pressure_acts();
 }
 
 // kick_drift for a model of bars, spline-beam hinges and CST triangles
@@ -345,8 +359,10 @@ void Solver::fused_kick_drift(bool whole_kick) {
   Particles& P = model_.particles;
   const BarChunks& chunks = bar_chunks();
   const bool hinged = model_.hinges.awake > 0, membranes = model_.csts.awake > 0;
+  const bool rotating = !P.rotational.empty();
   if (hinged) hinge_chunks();
   if (membranes) prepare_cst_chunks();
+  if (rotating) prepare_beam6_chunks();
   chunk_sums_.resize(chunks.chunks.size());
   const bool one_pass = P.integrated.size() == P.capacity();
   if (one_pass && xs_.size() != P.capacity()) xs_.resize(P.capacity());
@@ -367,6 +383,12 @@ void Solver::fused_kick_drift(bool whole_kick) {
     return physical ? physical_mass(point_mass[p], lumped_mass[p], free) : mass_scale * S[p];
   };
   const KickArgs args{lock, point_mass, lumped_mass, S, F, v, x, xn, mass_scale, keep, first * B * dt, dt};
+  // Rotation: the torques, kicked as kick_drift kicks them.
+  const std::uint8_t* active = P.active.data();
+  Vec3 *T = P.torque.data(), *w = P.angular_velocity.data();
+  double* K = P.rot_stiffness.data();
+  Quat* R = P.orientation.data();
+  if (rotating && physical) sum_rotary_inertia();
   const std::uint64_t pass = new_chunk_pass();
   auto kick_chunk = [&](std::uint32_t c) {
     const BarChunks::Chunk& ch = chunks.chunks[c];
@@ -376,6 +398,7 @@ void Solver::fused_kick_drift(bool whole_kick) {
       chunk_sums_[c] = {0, 0, 0, false, bad_hinge};
       return;
     }
+    ForceSum* turns = rotating ? chunk_beam6_sums(c, x, R, sums) : nullptr;
     if (membranes) chunk_cst_sums(c, x, sums);
     const ParticleId base = ParticleId(c) << chunks.shift;
     const ParticleId* ids = chunks.particles.data();
@@ -384,17 +407,38 @@ void Solver::fused_kick_drift(bool whole_kick) {
                                       : kick_particles<true, false>(ids, b, e, args, sums, base))
                                 : (xn ? kick_particles<false, true>(ids, b, e, args, sums, base)
                                       : kick_particles<false, false>(ids, b, e, args, sums, base));
-    chunk_sums_[c] = {k.ke, k.momentum2, k.residual2, k.bad, kNone};
+    ChunkSums out{k.ke, k.momentum2, k.residual2, k.bad, kNone, 0.0};
+    if (rotating) {
+      const ElementShares& share = rotating_chunk_shares_;
+      const ParticleId* rids = rotating_by_chunk_.data() + share.begin[c];
+      const std::uint32_t nr = share.begin[c + 1] - share.begin[c];
+      for (std::uint32_t n = 0; n < nr; ++n) {
+        const ParticleId p = rids[n];
+        const ForceSum& t = turns[p - base];
+        T[p] = Vec3(t[0], t[1], t[2]);
+        K[p] = t[3];
+      }
+      double* inertia = inertia_.data();
+      const KickTotals r =
+          kick_pass({rids, nr, active, lock, 3, T, K, inertia, nullptr, inertia, w, mass_scale, keep, first * B * dt},
+                    true, physical, k.ke);
+      out.ke = r.ke;
+      out.momentum2 = std::max(out.momentum2, r.momentum2);
+      out.bad |= r.bad;
+      out.torque2 = r.residual2;
+    }
+    chunk_sums_[c] = out;
   };
   for_chunks([&](std::uint32_t c) { chunk_bar_sums(c, x, pass, true); }, kick_chunk);
   ++evaluations_;
-  double ke = 0, momentum2 = 0, residual2 = 0;
+  double ke = 0, momentum2 = 0, residual2 = 0, torque2 = 0;
   bool bad = false;
   std::uint32_t bad_hinge = kNone;
   for (const ChunkSums& s : chunk_sums_) {
     ke += s.ke;
     momentum2 = std::max(momentum2, s.momentum2);
     residual2 = std::max(residual2, s.residual2);
+    torque2 = std::max(torque2, s.torque2);
     bad |= s.bad;
     bad_hinge = std::min(bad_hinge, s.bad_hinge);
   }
@@ -409,11 +453,11 @@ void Solver::fused_kick_drift(bool whole_kick) {
     throw NumericalError("solver: a force or mass is not usable at step " + std::to_string(steps_) +
                          "; velocities were reset, no particle was moved");
   }
-  torque_residual_ = 0;
-  residual_ = std::sqrt(residual2);
+  torque_residual_ = std::sqrt(torque2);
+  residual_ = std::max(std::sqrt(residual2), torque_residual_);
   if (!std::isfinite(ke)) [[unlikely]] {  // beyond the stability limit: the kick overflowed
-    const NumericalError e =
-        non_finite_motion(model_, nullptr, v, nullptr, settings, steps_, "velocities were reset, no particle was moved");
+    const NumericalError e = non_finite_motion(model_, nullptr, v, rotating ? w : nullptr, settings, steps_,
+                                               "velocities were reset, no particle was moved");
     reset_motion();
     throw e;
   }
@@ -429,6 +473,7 @@ void Solver::fused_kick_drift(bool whole_kick) {
         v[p].setZero();
       }
     });
+    if (rotating) turn_frames_back(q);
     record_reset();
     return;
   }
@@ -442,6 +487,8 @@ void Solver::fused_kick_drift(bool whole_kick) {
         x[p] += dt * v[p];  // eq. 3.12
       }
     });
+  if (rotating)  // eq. 3.19, turned in blocks
+    drift_frames(P.rotational.raw().data(), std::uint32_t(P.rotational.size()), active, dt, w, R);
   record_energy(ke, momentum2);
   half_step_ = true;
 }
@@ -477,9 +524,20 @@ double Solver::fused_step_bytes() const {
     membranes = double(cst_chunk_shares_.items.size()) * (4 + 12 + 16 + 8 + 1 + 12 + 1) +
                 double(corner_chunk_shares_.items.size()) * (4 + 4 + 1 + 72 + 72);
   }
+  // Per 6-DOF element of a chunk its index and the plan's ends, beam-end
+  // frames and constants, both nodes' frames gathered; per rotating
+  // particle its moment, torque and rotational stiffness written, inertia,
+  // angular velocity read and written, then the drift: angular velocity
+  // read, frame read and written (beam6_plan.hpp).
+  double six_dof = 0;
+  if (!P.rotational.empty()) {
+    prepare_beam6_chunks();
+    six_dof = double(beam6_chunk_shares_.items.size()) * (4 + 8 + 64 + 64 + 64) +
+              double(P.rotational.size()) * (4 + 1 + 1 + 24 + 24 + 8 + 8 + 24 + 24 + 24 + 32 + 32);
+  }
   // Two passes: id, position read and written, velocity read.
   const double drift = one_pass ? 0 : particles * (4 + 24 + 24 + 24);
-  return kick + elements + hinges + membranes + drift;
+  return kick + elements + hinges + membranes + six_dof + drift;
 }
 
 void Solver::synchronize_velocities() {

@@ -255,7 +255,7 @@ class Solver {
   // that invalidates them, or on request).
   void reset_motion();
   // The bytes a step of the fused bar kernel (Leapfrog or Symplectic Euler
-  // over bars, hinges and CST triangles alone) streams, counted as STREAM counts them: every array a
+  // over bars, hinges, 6-DOF beams and CST triangles alone) streams, counted as STREAM counts them: every array a
   // pass reads or writes counts once per pass, write-allocate not counted,
   // reuse within a chunk free. 0 when the step does not take that kernel.
   // bench_throughput divides the triad bandwidth by it: the memory bound.
@@ -287,6 +287,14 @@ class Solver {
   // the chunks share out beforehand.
   void prepare_cst_chunks() const;
   void chunk_cst_sums(std::uint32_t c, const Vec3* x, ForceSum* sums) const;
+  // The same for the 6-DOF beams (after the hinges, before the triangles):
+  // their forces into the chunk's sums, their torques into this thread's
+  // torque sums (returned, indexed as the sums), which start at the
+  // moments of the chunk's rotating particles; prepare_beam6_chunks derives
+  // the chunks' shares of the elements and of the rotating particles.
+  void prepare_beam6_chunks() const;
+  ForceSum* chunk_beam6_sums(std::uint32_t c, const Vec3* x, const Quat* q, ForceSum* sums) const;
+  const std::vector<ParticleId>& chunk_bounds() const;  // each chunk's first id, and the end
   // body(c) then late(c) for every chunk, the chunks split over the threads
   // in contiguous ranges; a chunk whose inbox draws on an earlier thread's
   // range runs late(c) once every thread finished its range.
@@ -303,11 +311,13 @@ class Solver {
   unsigned element_threads() const;
   bool elements_on_threads() const;  // element_threads() > 1 and element_threads_from reached
   const std::vector<ParticleId>& element_bounds() const;
-  // Leapfrog and Symplectic Euler over bars, spline-beam hinges and CST
-  // triangles alone: forces and the kick in one pass per chunk, then the
-  // drift (integrators.cpp).
+  // Leapfrog and Symplectic Euler over bars, spline-beam hinges, 6-DOF
+  // beams and CST triangles alone: forces and the kick in one pass per
+  // chunk, then the drift (integrators.cpp).
   bool fused_kick_drift_applies() const;
   void fused_kick_drift(bool whole_kick);
+  void sum_rotary_inertia();        // the physical inertia of the rotating particles
+  void turn_frames_back(double q);  // past a kinetic peak, by the fraction q of the step
   void accumulate_joint_forces(const Vec3* x, Vec3* F, double* S) const;  // joints.cpp
   void accumulate_goal_forces(const Vec3* x, Vec3* F, double* S) const;   // goal_forces.cpp
   void accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const;    // cst_forces.cpp
@@ -434,13 +444,17 @@ class Solver {
     double ke = 0, momentum2 = 0, residual2 = 0;
     bool bad = false;  // a force, stiffness or mass the step cannot use
     std::uint32_t bad_hinge = kNone;  // the first hinge it cannot evaluate (chunk_hinge_sums)
+    double torque2 = 0;               // the largest free torque squared
   };
   std::vector<ChunkSums> chunk_sums_;
   mutable std::vector<std::uint32_t> thread_first_chunk_;  // for_chunks: each thread's range
   mutable std::vector<ParticleId> element_bound_;            // element_bounds
   mutable ElementShares hinge_shares_, beam6_shares_, cst_shares_;
-  mutable ElementShares cst_chunk_shares_, corner_chunk_shares_;  // the fused step's: by chunk
-  mutable std::vector<ParticleId> chunk_bound_;                     // the chunks' first ids, and the end
+  // The fused step's shares, by chunk: CST triangles, projected corners,
+  // 6-DOF elements, rotating particles (and their ids, chunk by chunk).
+  mutable ElementShares cst_chunk_shares_, corner_chunk_shares_, beam6_chunk_shares_, rotating_chunk_shares_;
+  mutable std::vector<ParticleId> rotating_by_chunk_;
+  mutable std::vector<ParticleId> chunk_bound_;  // chunk_bounds
   mutable std::vector<std::uint32_t> thread_bad_hinge_;  // per thread: its first degenerate hinge
   bool projective_low_rank_ = true;
   bool mixed_implicit_ = false;      // Mixed: in its implicit phase

@@ -98,8 +98,10 @@ namespace {
 // have ends in both), one more beam across the grid with its ids falling,
 // two edges locked, loaded out of plane and along x; with `membrane` 1 or 2
 // a CST patch over the grid too, in form-finding or in analysis (its
-// triangles and projected corners on both sides of the chunks' boundary).
-std::unique_ptr<Model> beam_grid(int membrane) {
+// triangles and projected corners on both sides of the chunks' boundary);
+// with `six_dof` every fourth column a 6-DOF beam (ids 1024 and 1028 on
+// them).
+std::unique_ptr<Model> beam_grid(int membrane, bool six_dof = false) {
   constexpr int s = 40;
   auto m = std::make_unique<Model>();
   std::vector<ParticleId> g;
@@ -119,7 +121,8 @@ std::unique_ptr<Model> beam_grid(int membrane) {
   for (int c = 0; c < s; ++c) {
     std::vector<ParticleId> column;
     for (int r = 0; r < s; ++r) column.push_back(g[r * s + c]);
-    m->add_beam(column, section);
+    const BlockId beam = m->add_beam(column, section);
+    if (six_dof && c % 4 == 0) m->set_beam_formulation(beam, 6);
   }
   std::vector<ParticleId> falling;
   for (int r = s - 2; r >= 1; r -= 3) falling.push_back(m->add_particle(Vec3(0.1 * r, 0.1 * r, 0.3)));
@@ -131,17 +134,19 @@ std::unique_ptr<Model> beam_grid(int membrane) {
 
 }  // namespace
 
-TEST_CASE("fused step: hinges and CST triangles are summed as the element pass sums them, on any thread count") {
-  for (int membrane : {0, 1, 2}) {
+TEST_CASE("fused step: hinges, 6-DOF beams and CST triangles are summed as the element pass sums them, on any thread count") {
+  for (int membrane : {0, 1, 2})
+    for (bool six_dof : {false, true})
     for (Integrator integrator : {Integrator::Leapfrog, Integrator::SymplecticEuler}) {
-      const std::string name = std::string(integrator_name(integrator)) +
+      const std::string name = std::string(integrator_name(integrator)) + (six_dof ? ", 6-DOF columns" : "") +
                                (membrane == 0 ? "" : membrane == 1 ? ", CST form-finding" : ", CST analysis");
       CAPTURE(name);
-      std::vector<Vec3> x1, v1;
+      std::vector<Vec3> x1, v1, w1;
+      std::vector<Quat> R1;
       std::uint64_t resets1 = 0;
       for (int threads : {1, 2, 3}) {
         CAPTURE(threads);
-        auto m = beam_grid(membrane);
+        auto m = beam_grid(membrane, six_dof);
         Particles& P = m->particles;
         Solver s(*m);
         s.settings.integrator = integrator;
@@ -149,31 +154,40 @@ TEST_CASE("fused step: hinges and CST triangles are summed as the element pass s
         REQUIRE(s.fused_step_bytes() > 0);  // the fused step takes this model
         for (int k = 0; k < 200; ++k) {
           const std::vector<Vec3> before = P.position.raw();
+          const std::vector<Quat> frames = P.orientation.raw();
           s.step();
           if (k % 50 != 0) continue;
           // The forces and stiffnesses the fused step kicked with are those
           // of the element pass (bars, hinges, then triangles) at the
           // step's positions.
-          const std::vector<Vec3> after = P.position.raw(), fused_F = P.force.raw();
-          const std::vector<double> fused_S = P.stiffness.raw();
+          const std::vector<Vec3> after = P.position.raw(), fused_F = P.force.raw(), fused_T = P.torque.raw();
+          const std::vector<double> fused_S = P.stiffness.raw(), fused_K = P.rot_stiffness.raw();
+          const std::vector<Quat> turned = P.orientation.raw();
           P.position.raw() = before;
+          P.orientation.raw() = frames;
           s.compute_forces();
           CHECK(P.force.raw() == fused_F);
           CHECK(P.stiffness.raw() == fused_S);
+          CHECK(P.torque.raw() == fused_T);
+          CHECK(P.rot_stiffness.raw() == fused_K);
           P.position.raw() = after;
+          P.orientation.raw() = turned;
         }
         CHECK(m->check() == "");
         if (threads == 1) {
-          x1 = P.position.raw(), v1 = P.velocity.raw(), resets1 = s.kinetic_resets();
+          x1 = P.position.raw(), v1 = P.velocity.raw(), w1 = P.angular_velocity.raw(), R1 = P.orientation.raw();
+          resets1 = s.kinetic_resets();
           REQUIRE(resets1 > 0);  // the kinetic peaks' move back was exercised
+          if (six_dof) REQUIRE(s.torque_residual() > 0);  // the frames turned
         } else {
           CHECK(P.position.raw() == x1);
           CHECK(P.velocity.raw() == v1);
+          CHECK(P.angular_velocity.raw() == w1);
+          CHECK(P.orientation.raw() == R1);
           CHECK(s.kinetic_resets() == resets1);
         }
       }
     }
-  }
 }
 
 TEST_CASE("fused step: another integrator takes over after it (its scratch sized, though the drift used one buffer)") {
