@@ -270,14 +270,12 @@ void beam6_forces(const Beam6Plan& plan, const Beam6* beams, const std::uint32_t
         r.tb = Vec3(bb.tbx[m], bb.tby[m], bb.tbz[m]);
       }
       const bool own_i = own(i), own_j = own(j);
-      if (own_i) out.stiffness(i, r.k);
-      if (own_j) out.stiffness(j, r.k);
-      if (own_i) out.rot_stiffness(i, r.kr);
-      if (own_j) out.rot_stiffness(j, r.kr);
-      if (own_i) out.force(i, -r.fj);
-      if (own_j) out.force(j, r.fj);
-      if (own_i) out.torque(i, r.ta);
-      if (own_j) out.torque(j, r.tb);
+      // Each lane of an end takes one addition (i != j), so its force and
+      // stiffness go together: the element pass's sums, bit for bit.
+      if (own_i) out.force_stiffness(i, -r.fj, r.k);
+      if (own_j) out.force_stiffness(j, r.fj, r.k);
+      if (own_i) out.torque_stiffness(i, r.ta, r.kr);
+      if (own_j) out.torque_stiffness(j, r.tb, r.kr);
     }
   }
 }
