@@ -254,10 +254,11 @@ class Solver {
   // Forgets velocities and the kinetic-energy history (after a topology change
   // that invalidates them, or on request).
   void reset_motion();
-  // The bytes a step of the fused bar kernel (Leapfrog or Symplectic Euler
-  // over bars, hinges, 6-DOF beams and CST triangles alone) streams, counted as STREAM counts them: every array a
-  // pass reads or writes counts once per pass, write-allocate not counted,
-  // reuse within a chunk free. 0 when the step does not take that kernel.
+  // The bytes a step of the fused kernel (Leapfrog or Symplectic Euler over
+  // bars, hinges, 6-DOF beams and CST triangles alone) streams, counted as
+  // STREAM counts them: every array a pass reads or writes counts once per
+  // pass, write-allocate not counted, reuse within a chunk free. 0 when the
+  // step does not take that kernel.
   // bench_throughput divides the triad bandwidth by it: the memory bound.
   double fused_step_bytes() const;
 
