@@ -218,7 +218,6 @@ void Solver::kick_drift(bool whole_kick, bool prepare) {
   const std::vector<ParticleId>& rotating = P.rotational.raw();
   Vec3* w = P.angular_velocity.data();
   const Vec3* T = P.torque.data();
-  const double* inertia = inertia_.data();
   if (prepare && physical && !rotating.empty()) sum_rotary_inertia();
   const KickTotals rotated = kick_pass({rotating.data(), std::uint32_t(rotating.size()), active, lock, 3, T,
                                         P.rot_stiffness.data(), inertia_.data(), nullptr, inertia_.data(), w,
