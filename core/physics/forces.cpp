@@ -327,7 +327,9 @@ TENDRIL_SIMD_CLONES std::uint32_t scatter_hinges(const HingeBlock& hb, std::uint
 
 // Each thread's sums of the chunk it evaluated last, named by the pass and
 // the chunk: a chunk's late part on the same thread right after its body
-// finds them; one deferred to the pass's end (or run on another thread)
+// finds them. A chunk whose late part waits for the end of its thread's
+// range (for_chunks) keeps its sums in a second scratch, so that they are
+// still there; one whose sums are gone (or run on another thread)
 // evaluates the chunk's bars again, the same numbers, its slots untouched.
 struct ChunkSumsScratch {
   std::uint64_t pass = 0;
@@ -340,7 +342,7 @@ struct ChunkSumsScratch {
   std::vector<Slot> sums;
   ForceSum* data() { return &sums.data()->sum; }
 };
-thread_local ChunkSumsScratch chunk_sums_scratch;
+thread_local ChunkSumsScratch chunk_sums_scratch[2];  // [1]: a chunk whose late part waits
 std::atomic<std::uint64_t> chunk_passes{0};
 
 }  // namespace
@@ -350,7 +352,13 @@ std::uint64_t Solver::new_chunk_pass() { return ++chunk_passes; }
 ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const Vec3* x, std::uint64_t pass, bool fill_slots) const {
   const BarChunks& B = bar_chunks_;
   const BarChunks::Chunk& c = B.chunks[chunk];
-  ChunkSumsScratch& scratch = chunk_sums_scratch;
+  // Under the last split over threads (stale when none: a scratch used in
+  // vain), does its late part wait for the end of its thread's range?
+  const std::vector<std::uint32_t>& first = thread_first_chunk_;
+  std::size_t t = 0;
+  while (t + 2 < first.size() && first[t + 1] <= chunk) ++t;
+  const bool waits = t + 1 < first.size() && c.first_source < first[t];
+  ChunkSumsScratch& scratch = chunk_sums_scratch[waits ? 1 : 0];
   const std::size_t chunk_size = std::size_t(1) << B.shift;
   if (scratch.sums.size() < chunk_size) scratch.sums.resize(chunk_size);
   ForceSum* sums = scratch.data();
@@ -407,9 +415,10 @@ ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const Vec3* x, std::uint64
 }
 
 ForceSum* Solver::chunk_force_sums(std::uint32_t chunk, const Vec3* x, std::uint64_t pass) const {
-  ChunkSumsScratch& scratch = chunk_sums_scratch;
-  ForceSum* sums =
-      scratch.pass == pass && scratch.chunk == chunk ? scratch.data() : chunk_bar_sums(chunk, x, pass, false);
+  ForceSum* sums = nullptr;
+  for (ChunkSumsScratch& scratch : chunk_sums_scratch)
+    if (scratch.pass == pass && scratch.chunk == chunk) sums = scratch.data();
+  if (!sums) sums = chunk_bar_sums(chunk, x, pass, false);
   const BarChunks& B = bar_chunks_;
   const BarChunks::Chunk& c = B.chunks[chunk];
   const ParticleId base = ParticleId(chunk) << B.shift;
@@ -561,19 +570,34 @@ void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(
   }
   const unsigned threads = split_chunks();
   const std::vector<std::uint32_t>& first = thread_first_chunk_;
-  bool deferred = false;
-  for (unsigned t = 0; t < threads; ++t)
-    for (std::uint32_t k = first[t]; k < first[t + 1]; ++k) deferred |= B.chunks[k].first_source < first[t];
+  // A chunk whose inbox draws on an earlier thread's range waits, after
+  // its own thread's range, for the bodies of those chunks (each marks its
+  // end with this pass's round): no second run over the threads.
+  if (chunk_done_.size() < n) chunk_done_ = std::vector<std::atomic<std::uint64_t>>(n);
+  const std::uint64_t round = ++chunk_round_;
+  auto mark_done = [&](std::uint32_t k) {
+    chunk_done_[k].store(round, std::memory_order_release);
+    chunk_done_[k].notify_all();
+  };
   workers_->run(threads, [&](unsigned t) {
-    for (std::uint32_t k = first[t]; k < first[t + 1]; ++k) {
-      body(k);
-      if (B.chunks[k].first_source >= first[t]) late(k);
+    bool deferred = false;
+    try {
+      for (std::uint32_t k = first[t]; k < first[t + 1]; ++k) {
+        body(k);
+        mark_done(k);
+        if (B.chunks[k].first_source >= first[t]) late(k);
+        else deferred = true;
+      }
+    } catch (...) {  // no thread may wait for a body that never ends
+      for (std::uint32_t k = first[t]; k < first[t + 1]; ++k) mark_done(k);
+      throw;
     }
-  });
-  if (!deferred) return;
-  workers_->run(threads, [&](unsigned t) {
-    for (std::uint32_t k = first[t]; k < first[t + 1]; ++k)
-      if (B.chunks[k].first_source < first[t]) late(k);
+    if (!deferred) return;
+    for (std::uint32_t k = first[t]; k < first[t + 1]; ++k) {
+      if (B.chunks[k].first_source >= first[t]) continue;
+      for (std::uint32_t c = B.chunks[k].first_source; c < first[t]; ++c) wait_for(chunk_done_[c], round);
+      late(k);
+    }
   });
 }
 

@@ -14,6 +14,7 @@
 // The step allocates nothing once the scratch buffers match the particle
 // capacity, and reads the topology only through the buffers.
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -298,7 +299,8 @@ class Solver {
   const std::vector<ParticleId>& chunk_bounds() const;  // each chunk's first id, and the end
   // body(c) then late(c) for every chunk, the chunks split over the threads
   // in contiguous ranges; a chunk whose inbox draws on an earlier thread's
-  // range runs late(c) once every thread finished its range.
+  // range runs late(c) after its thread's range, once the bodies it draws
+  // on are done.
   // `threaded` false: on the calling thread alone.
   void for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(std::uint32_t)> late,
                   bool threaded = true) const;
@@ -449,6 +451,8 @@ class Solver {
   };
   std::vector<ChunkSums> chunk_sums_;
   mutable std::vector<std::uint32_t> thread_first_chunk_;  // for_chunks: each thread's range
+  mutable std::vector<std::atomic<std::uint64_t>> chunk_done_;  // for_chunks: the round of each chunk's last body
+  mutable std::uint64_t chunk_round_ = 0;
   mutable std::vector<ParticleId> element_bound_;            // element_bounds
   mutable ElementShares hinge_shares_, beam6_shares_, cst_shares_;
   // The fused step's shares, by chunk: CST triangles, projected corners,

@@ -1,18 +1,39 @@
 #include "physics/workers.hpp"
 
+#include <chrono>
+
 namespace tendril {
 
 namespace {
-// Spins this many polls before sleeping: a few microseconds.
-constexpr int kSpins = 4000;
+// Spins this long before sleeping: about a 10K-particle step and the
+// solver's serial work between two steps, so that a helper stays awake from
+// one step to the next. Woken from a futex, a helper on the 2-core virtual
+// development machine started late enough to cost the bar net at 10K most
+// of its second thread (docs/performance.md, stop 33).
+constexpr auto kSpin = std::chrono::microseconds(100);
 
-template <class Done>
-void wait_until(std::atomic<unsigned>& a, Done&& done) {
-  for (int k = 0; k < kSpins; ++k)
+// Tells the core this is a spin loop (lets the other hardware thread run).
+inline void relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#endif
+}
+
+template <class T, class Done>
+void wait_until(std::atomic<T>& a, Done&& done) {
+  const auto until = std::chrono::steady_clock::now() + kSpin;
+  for (int k = 0;; ++k) {
     if (done(a.load(std::memory_order_acquire))) return;
-  for (unsigned v = a.load(std::memory_order_acquire); !done(v); v = a.load(std::memory_order_acquire)) a.wait(v);
+    if ((k & 63) == 63 && std::chrono::steady_clock::now() > until) break;
+    relax();
+  }
+  for (T v = a.load(std::memory_order_acquire); !done(v); v = a.load(std::memory_order_acquire)) a.wait(v);
 }
 }  // namespace
+
+void wait_for(std::atomic<std::uint64_t>& a, std::uint64_t value) {
+  wait_until(a, [value](std::uint64_t v) { return v >= value; });
+}
 
 Workers::~Workers() { resize(0); }
 

@@ -4,11 +4,12 @@
 // partitioned by the caller into fixed chunks that do not depend on the
 // number of threads, and every sum over chunks is reduced in chunk order, so
 // the thread count changes the speed, never the numbers.
-// Idle threads spin briefly, then sleep on a futex (std::atomic::wait): a
-// step at 10K particles lasts ~100 us, a wake-up through a condition
-// variable costs a noticeable part of that.
+// Idle threads spin for 100 us, then sleep on a futex (std::atomic::wait):
+// a step at 10K particles lasts ~150 us, and a wake-up from sleep costs a
+// noticeable part of that (workers.cpp).
 #include <atomic>
 #include <concepts>
+#include <cstdint>
 #include <exception>
 #include <memory>
 #include <thread>
@@ -35,6 +36,10 @@ class FunctionRef<R(Args...)> {
   void* object_;
   R (*call_)(void*, Args...);
 };
+
+// Returns once `a` holds `value` or more (spinning first, as the idle
+// threads do).
+void wait_for(std::atomic<std::uint64_t>& a, std::uint64_t value);
 
 class Workers {
  public:
