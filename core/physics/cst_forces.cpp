@@ -291,14 +291,14 @@ void Solver::prepare_cst_chunks() const {
   if (!cst_plan_.current(model_)) cst_plan_.derive(model_);
   const CstPlan& plan = cst_plan_;
   if (cst_corner_sums_.size() != plan.corner.size()) cst_corner_sums_.assign(plan.corner.size(), CstCornerSums{});
-  const std::vector<ParticleId>& chunk_bound_ = chunk_bounds();
-  if (!cst_chunk_shares_.current(model_, chunk_bound_))
-    cst_chunk_shares_.derive(model_, chunk_bound_, std::uint32_t(plan.i.size()), [&](std::uint32_t e, ParticleId* at) {
+  const std::vector<ParticleId>& bound = chunk_bounds();
+  if (!cst_chunk_shares_.current(model_, bound))
+    cst_chunk_shares_.derive(model_, bound, std::uint32_t(plan.i.size()), [&](std::uint32_t e, ParticleId* at) {
       at[0] = plan.i[e], at[1] = plan.j[e], at[2] = plan.k[e];
       return 3;
     });
-  if (!corner_chunk_shares_.current(model_, chunk_bound_))
-    corner_chunk_shares_.derive(model_, chunk_bound_, std::uint32_t(plan.corner.size()),
+  if (!corner_chunk_shares_.current(model_, bound))
+    corner_chunk_shares_.derive(model_, bound, std::uint32_t(plan.corner.size()),
                                 [&](std::uint32_t s, ParticleId* at) {
                                   at[0] = plan.corner[s];
                                   return 1;

@@ -345,6 +345,14 @@ struct ChunkSumsScratch {
 thread_local ChunkSumsScratch chunk_sums_scratch[2];  // [1]: a chunk whose late part waits
 std::atomic<std::uint64_t> chunk_passes{0};
 
+// Whether chunk c's late part waits for the end of its thread's range under
+// the split `first` (for_chunks): its inbox draws on an earlier range.
+bool late_waits(const BarChunks& B, const std::vector<std::uint32_t>& first, std::uint32_t c) {
+  std::size_t t = 0;
+  while (t + 2 < first.size() && first[t + 1] <= c) ++t;
+  return t + 1 < first.size() && B.chunks[c].first_source < first[t];
+}
+
 }  // namespace
 
 std::uint64_t Solver::new_chunk_pass() { return ++chunk_passes; }
@@ -353,12 +361,8 @@ ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const Vec3* x, std::uint64
   const BarChunks& B = bar_chunks_;
   const BarChunks::Chunk& c = B.chunks[chunk];
   // Under the last split over threads (stale when none: a scratch used in
-  // vain), does its late part wait for the end of its thread's range?
-  const std::vector<std::uint32_t>& first = thread_first_chunk_;
-  std::size_t t = 0;
-  while (t + 2 < first.size() && first[t + 1] <= chunk) ++t;
-  const bool waits = t + 1 < first.size() && c.first_source < first[t];
-  ChunkSumsScratch& scratch = chunk_sums_scratch[waits ? 1 : 0];
+  // vain).
+  ChunkSumsScratch& scratch = chunk_sums_scratch[late_waits(B, thread_first_chunk_, chunk) ? 1 : 0];
   const std::size_t chunk_size = std::size_t(1) << B.shift;
   if (scratch.sums.size() < chunk_size) scratch.sums.resize(chunk_size);
   ForceSum* sums = scratch.data();
@@ -585,7 +589,7 @@ void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(
       for (std::uint32_t k = first[t]; k < first[t + 1]; ++k) {
         body(k);
         mark_done(k);
-        if (B.chunks[k].first_source >= first[t]) late(k);
+        if (!late_waits(B, first, k)) late(k);
         else deferred = true;
       }
     } catch (...) {  // no thread may wait for a body that never ends
@@ -594,7 +598,7 @@ void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(
     }
     if (!deferred) return;
     for (std::uint32_t k = first[t]; k < first[t + 1]; ++k) {
-      if (B.chunks[k].first_source >= first[t]) continue;
+      if (!late_waits(B, first, k)) continue;
       for (std::uint32_t c = B.chunks[k].first_source; c < first[t]; ++c) wait_for(chunk_done_[c], round);
       late(k);
     }

@@ -335,12 +335,13 @@ bool Solver::fused_kick_drift_applies() const {
          !pressure_acts();
 }
 
-// kick_drift for a model of bars, spline-beam hinges and CST triangles
-// alone, without a separate force pass: each chunk's particles are kicked
-// as soon as their forces are complete (its own bars, its inbox, its
-// hinges, then its triangles and projected corners), while they are still
-// in the cache. The arithmetic is kick_drift's; sums over particles
-// (kinetic energy) are gathered per chunk and added in chunk order. A force, stiffness or mass
+// kick_drift for a model of bars, spline-beam hinges, 6-DOF beams and CST
+// triangles alone, without a separate force pass: each chunk's particles
+// (and rotating particles) are kicked as soon as their forces are complete
+// (its own bars, its inbox, its hinges, its 6-DOF elements, then its
+// triangles and projected corners), while they are still in the cache. The
+// arithmetic is kick_drift's; sums over particles (kinetic energy) are
+// gathered per chunk and added in chunk order. A force, stiffness or mass
 // the step cannot use is found only after some velocities were kicked:
 // the velocities are reset, prepare_masses names the particle as for the
 // other integrators, and no particle was moved.
