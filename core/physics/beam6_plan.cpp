@@ -4,17 +4,24 @@
 
 namespace tendril {
 
+template <class Each>
+void Beam6Plan::columns(Beam6Plan& out, const Beam6Plan& in, Each each) {
+  each(out.i, in.i), each(out.j, in.j);
+  for (int c = 0; c < 4; ++c) each(out.end_i[c], in.end_i[c]), each(out.end_j[c], in.end_j[c]);
+  each(out.L, in.L), each(out.EA, in.EA), each(out.prestress, in.prestress), each(out.k_static, in.k_static);
+  each(out.kr, in.kr), each(out.cz, in.cz), each(out.cy, in.cy), each(out.torsion, in.torsion);
+}
+
 void Beam6Plan::derive(const Model& m) {
   const Beam6* beams = m.beam6s.awake_begin();
   const std::size_t n = m.beam6s.awake;
-  for (auto* v : {&i, &j}) v->resize(n);
-  for (auto* v : {&end_i, &end_j}) v->resize(n);
-  for (auto* v : {&L, &EA, &prestress, &k_static, &kr, &cz, &cy, &torsion}) v->resize(n);
+  elements.clear();
+  columns(*this, *this, [n](auto& column, const auto&) { column.resize(n); });
   for (std::size_t e = 0; e < n; ++e) {
     const Beam6& b = beams[e];
     const double l = b.rest_length, EI = b.EIy < b.EIz ? b.EIz : b.EIy;
     i[e] = b.i, j[e] = b.j;
-    end_i[e] = b.end_i, end_j[e] = b.end_j;
+    for (int c = 0; c < 4; ++c) end_i[c][e] = b.end_i.coeffs()[c], end_j[c][e] = b.end_j.coeffs()[c];
     L[e] = l, EA[e] = b.EA, prestress[e] = b.prestress;
     // As beam6_ends writes them (std::max(a, b) is a < b ? b : a).
     const double k_axial = b.EA / l, k_bending = kBendingMassFactor * 12 * EI / (l * l * l);
@@ -27,6 +34,18 @@ void Beam6Plan::derive(const Model& m) {
   model_ = &m;
   revision_ = m.revision;
   capacity_ = m.particles.capacity();
+}
+
+void Beam6Plan::derive(const Beam6Plan& from, const std::vector<std::uint32_t>& items) {
+  elements.resize(items.size());
+  for (std::size_t e = 0; e < items.size(); ++e) elements[e] = from.element(items[e]);
+  columns(*this, from, [&](auto& out, const auto& in) {
+    out.resize(items.size());
+    for (std::size_t e = 0; e < items.size(); ++e) out[e] = in[items[e]];
+  });
+  model_ = from.model_;
+  revision_ = from.revision_;
+  capacity_ = from.capacity_;
 }
 
 }  // namespace tendril

@@ -3,6 +3,10 @@
 // 1: a derived cache, like BarChunks): structure of arrays holding what the
 // force reads, with the quotients of constants that eq. 3.46-3.49 divide
 // every step stored once (the same expressions, so the same numbers).
+// A plan is in the model's order, or in the order a share of the elements
+// is evaluated in (the fused step's chunks, the threads of the element
+// pass: ElementShares::items), so that the element loop reads its
+// constants in place instead of copying them element by element.
 // Derived again whenever the model's revision or capacity moved.
 #include <cstdint>
 #include <vector>
@@ -16,10 +20,15 @@ struct Beam6Plan {
     return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity();
   }
   void derive(const Model& m);
+  // The entries items[0 .. n) of `from` (in the model's order), in that order.
+  void derive(const Beam6Plan& from, const std::vector<std::uint32_t>& items);
+  // The index among the awake elements of entry e.
+  std::uint32_t element(std::uint32_t e) const { return elements.empty() ? e : elements[e]; }
 
-  // Per awake element, in the model's order.
+  // Per entry.
+  std::vector<std::uint32_t> elements;  // its awake element (empty: in the model's order)
   std::vector<ParticleId> i, j;
-  std::vector<Quat> end_i, end_j;
+  std::vector<double> end_i[4], end_j[4];  // x, y, z, w of the beam-end orientations
   std::vector<double> L, EA, prestress;
   std::vector<double> k_static;  // max(EA / L, 7/4 12 EI / L^3), eq. 3.47 without the geometric term
   std::vector<double> kr;        // max(GJ / L, 7/4 4 EI / L), eq. 3.49
@@ -27,6 +36,9 @@ struct Beam6Plan {
   std::vector<double> torsion;   // GJ / L
 
  private:
+  // each(out's column, in's column) for every per-entry column but elements.
+  template <class Each>
+  static void columns(Beam6Plan& out, const Beam6Plan& in, Each each);
   const Model* model_ = nullptr;
   std::uint64_t revision_ = ~std::uint64_t(0);
   std::size_t capacity_ = 0;

@@ -109,9 +109,10 @@ TENDRIL_SIMD_CLONES void hinge_block(HingeBlock& h, std::uint32_t n) {
   }
 }
 
-// 6-DOF beams the same way (eq. 3.44-3.50): the chord, both nodes' frames
-// and beam-end orientations and the element's constants (Beam6Plan)
-// gathered, then one vectorised loop for each end's frame q * end (Eigen's
+// 6-DOF beams the same way (eq. 3.44-3.50): the chord and both nodes'
+// frames gathered, then one vectorised loop, reading the beam-end
+// orientations and the element's constants in place (Beam6Plan, in the
+// order of evaluation), for each end's frame q * end (Eigen's
 // SSE2 quaternion product, as beam6_ends computes it), the rotation
 // matrices, the element frame, the included angles, the end moments, the
 // forces and the direct stiffnesses, then the scatter in the model's order.
@@ -125,12 +126,7 @@ constexpr std::uint32_t kBeam6Block = 64;
 struct Beam6Block {
   alignas(64) double dx[kBeam6Block], dy[kBeam6Block], dz[kBeam6Block];
   alignas(64) double qix[kBeam6Block], qiy[kBeam6Block], qiz[kBeam6Block], qiw[kBeam6Block];  // q[i]
-  alignas(64) double eix[kBeam6Block], eiy[kBeam6Block], eiz[kBeam6Block], eiw[kBeam6Block];  // end_i
   alignas(64) double qjx[kBeam6Block], qjy[kBeam6Block], qjz[kBeam6Block], qjw[kBeam6Block];  // q[j]
-  alignas(64) double ejx[kBeam6Block], ejy[kBeam6Block], ejz[kBeam6Block], ejw[kBeam6Block];  // end_j
-  alignas(64) double L[kBeam6Block], EA[kBeam6Block], pre[kBeam6Block];
-  alignas(64) double k_static[kBeam6Block], kr_static[kBeam6Block], cz[kBeam6Block], cy[kBeam6Block];
-  alignas(64) double torsion[kBeam6Block];
   alignas(64) double k[kBeam6Block], kr[kBeam6Block], fx[kBeam6Block], fy[kBeam6Block], fz[kBeam6Block];
   alignas(64) double tax[kBeam6Block], tay[kBeam6Block], taz[kBeam6Block];
   alignas(64) double tbx[kBeam6Block], tby[kBeam6Block], tbz[kBeam6Block];
@@ -153,19 +149,29 @@ inline TENDRIL_INLINE void frame_matrix(double ax, double ay, double az, double 
   E[2][0] = txz - twy, E[2][1] = tyz + twx, E[2][2] = 1.0 - (txx + tyy);
 }
 
-TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, std::uint32_t n, double gf) {
+TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, const Beam6Plan& plan, std::uint32_t first, std::uint32_t n,
+                                     double gf) {
+  const double *__restrict eix = plan.end_i[0].data() + first, *__restrict eiy = plan.end_i[1].data() + first,
+                           *__restrict eiz = plan.end_i[2].data() + first, *__restrict eiw = plan.end_i[3].data() + first;
+  const double *__restrict ejx = plan.end_j[0].data() + first, *__restrict ejy = plan.end_j[1].data() + first,
+                           *__restrict ejz = plan.end_j[2].data() + first, *__restrict ejw = plan.end_j[3].data() + first;
+  const double *__restrict rest = plan.L.data() + first, *__restrict axial = plan.EA.data() + first,
+                           *__restrict pre = plan.prestress.data() + first;
+  const double *__restrict k_static = plan.k_static.data() + first, *__restrict kr = plan.kr.data() + first;
+  const double *__restrict c_z = plan.cz.data() + first, *__restrict c_y = plan.cy.data() + first,
+                           *__restrict torsion = plan.torsion.data() + first;
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
-    const double L = b.L[m], EA = b.EA[m];
+    const double L = rest[m], EA = axial[m];
     const double dx = b.dx[m], dy = b.dy[m], dz = b.dz[m];
     const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const double N = b.pre[m] + EA * (l - L) / L;  // eq. 3.32 with K = EA / L
-    b.k[m] = b.k_static[m] + (l > 0 && N > 0 ? gf * N / l : 0.0);  // eq. 3.47
-    b.kr[m] = b.kr_static[m];                                       // eq. 3.49
+    const double N = pre[m] + EA * (l - L) / L;  // eq. 3.32 with K = EA / L
+    b.k[m] = k_static[m] + (l > 0 && N > 0 ? gf * N / l : 0.0);  // eq. 3.47
+    b.kr[m] = kr[m];                                       // eq. 3.49
     // Ea, Eb: the rotation matrices of q[i] * end_i and q[j] * end_j.
     double Ea[3][3], Eb[3][3];
-    frame_matrix(b.qix[m], b.qiy[m], b.qiz[m], b.qiw[m], b.eix[m], b.eiy[m], b.eiz[m], b.eiw[m], Ea);
-    frame_matrix(b.qjx[m], b.qjy[m], b.qjz[m], b.qjw[m], b.ejx[m], b.ejy[m], b.ejz[m], b.ejw[m], Eb);
+    frame_matrix(b.qix[m], b.qiy[m], b.qiz[m], b.qiw[m], eix[m], eiy[m], eiz[m], eiw[m], Ea);
+    frame_matrix(b.qjx[m], b.qjy[m], b.qjz[m], b.qjw[m], ejx[m], ejy[m], ejz[m], ejw[m], Eb);
     const double ux0 = dx / l, ux1 = dy / l, ux2 = dz / l;  // eq. 3.45
     // element_frame: y = (Ea z + Eb z) x ux, normalized; z = ux x y.
     const double s0 = Ea[0][2] + Eb[0][2], s1 = Ea[1][2] + Eb[1][2], s2 = Ea[2][2] + Eb[2][2];
@@ -182,10 +188,10 @@ TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, std::uint32_t n, double gf) 
     const double twist = 0.5 * ((Eb[0][1] * Ea[0][2] + Eb[1][1] * Ea[1][2] + Eb[2][1] * Ea[2][2]) -
                                 (Ea[0][1] * Eb[0][2] + Ea[1][1] * Eb[1][2] + Ea[2][1] * Eb[2][2]));
     // Eq. 3.46.
-    const double cz = b.cz[m], cy = b.cy[m];
+    const double cz = c_z[m], cy = c_y[m];
     const double Mza = cz * (2 * za + zb), Mzb = cz * (za + 2 * zb);
     const double Mya = cy * (2 * ya + yb), Myb = cy * (ya + 2 * yb);
-    const double Mx = b.torsion[m] * twist;
+    const double Mx = torsion[m] * twist;
     const double ta0 = Mx * ux0 - Mya * uy0 - Mza * uz0, ta1 = Mx * ux1 - Mya * uy1 - Mza * uz1,
                  ta2 = Mx * ux2 - Mya * uy2 - Mza * uz2;
     const double tb0 = -Mx * ux0 - Myb * uy0 - Mzb * uz0, tb1 = -Mx * ux1 - Myb * uy1 - Mzb * uz1,
@@ -234,35 +240,30 @@ std::uint32_t hinge_forces(const Hinge* hinges, const std::uint32_t* items, std:
   return kNone;
 }
 
-// One thread's (or chunk's) 6-DOF elements, as hinge_forces, into `out`
-// (element_sinks.hpp). F - f is F + (-f) exactly.
+// One thread's (or chunk's) 6-DOF elements, the plan's entries first ..
+// first + count, in its order, into `out` (element_sinks.hpp), as
+// hinge_forces adds. F - f is F + (-f) exactly.
 template <bool kShared, class Sink>
-void beam6_forces(const Beam6Plan& plan, const Beam6* beams, const std::uint32_t* items, std::uint32_t count,
+void beam6_forces(const Beam6Plan& plan, const Beam6* beams, std::uint32_t first, std::uint32_t count,
                   Owned<kShared> own, const Vec3* x, const Quat* q, double gf, Sink out) {
+  const ParticleId *pi = plan.i.data(), *pj = plan.j.data();
   Beam6Block bb;
-  for (std::uint32_t e0 = 0; e0 < count; e0 += kBeam6Block) {
-    const std::uint32_t n = std::min(kBeam6Block, count - e0);
+  for (std::uint32_t e0 = first; e0 < first + count; e0 += kBeam6Block) {
+    const std::uint32_t n = std::min(kBeam6Block, first + count - e0);
     for (std::uint32_t m = 0; m < n; ++m) {
-      const std::uint32_t e = kShared ? items[e0 + m] : e0 + m;
-      const ParticleId i = plan.i[e], j = plan.j[e];
+      const ParticleId i = pi[e0 + m], j = pj[e0 + m];
       const Vec3 d = x[j] - x[i];
-      const Quat &qi = q[i], &qj = q[j], &ei = plan.end_i[e], &ej = plan.end_j[e];
+      const Quat &qi = q[i], &qj = q[j];
       bb.dx[m] = d.x(), bb.dy[m] = d.y(), bb.dz[m] = d.z();
       bb.qix[m] = qi.x(), bb.qiy[m] = qi.y(), bb.qiz[m] = qi.z(), bb.qiw[m] = qi.w();
-      bb.eix[m] = ei.x(), bb.eiy[m] = ei.y(), bb.eiz[m] = ei.z(), bb.eiw[m] = ei.w();
       bb.qjx[m] = qj.x(), bb.qjy[m] = qj.y(), bb.qjz[m] = qj.z(), bb.qjw[m] = qj.w();
-      bb.ejx[m] = ej.x(), bb.ejy[m] = ej.y(), bb.ejz[m] = ej.z(), bb.ejw[m] = ej.w();
-      bb.L[m] = plan.L[e], bb.EA[m] = plan.EA[e], bb.pre[m] = plan.prestress[e];
-      bb.k_static[m] = plan.k_static[e], bb.kr_static[m] = plan.kr[e];
-      bb.cz[m] = plan.cz[e], bb.cy[m] = plan.cy[e], bb.torsion[m] = plan.torsion[e];
     }
-    beam6_block(bb, n, gf);
+    beam6_block(bb, plan, e0, n, gf);
     for (std::uint32_t m = 0; m < n; ++m) {
-      const std::uint32_t e = kShared ? items[e0 + m] : e0 + m;
-      const ParticleId i = plan.i[e], j = plan.j[e];
+      const ParticleId i = pi[e0 + m], j = pj[e0 + m];
       Beam6Ends r;
       if (bb.redo[m] != 0) [[unlikely]] {
-        r = beam6_ends(beams[e], x, q, gf);
+        r = beam6_ends(beams[plan.element(e0 + m)], x, q, gf);
       } else {
         r.k = bb.k[m], r.kr = bb.kr[m];
         r.fj = Vec3(bb.fx[m], bb.fy[m], bb.fz[m]);
@@ -481,11 +482,13 @@ void Solver::prepare_beam6_chunks() const {
   if (!beam6_plan_.current(model_)) beam6_plan_.derive(model_);
   const Beam6Plan& plan = beam6_plan_;
   const std::vector<ParticleId>& bound = chunk_bounds();
-  if (!beam6_chunk_shares_.current(model_, bound))
+  if (!beam6_chunk_shares_.current(model_, bound) || !beam6_chunk_plan_.current(model_)) {
     beam6_chunk_shares_.derive(model_, bound, std::uint32_t(plan.i.size()), [&](std::uint32_t e, ParticleId* at) {
       at[0] = plan.i[e], at[1] = plan.j[e];
       return 2;
     });
+    beam6_chunk_plan_.derive(plan, beam6_chunk_shares_.items);
+  }
   const std::vector<ParticleId>& rotating = model_.particles.rotational.raw();
   if (!rotating_chunk_shares_.current(model_, bound)) {
     rotating_chunk_shares_.derive(model_, bound, std::uint32_t(rotating.size()), [&](std::uint32_t e, ParticleId* at) {
@@ -518,7 +521,7 @@ ForceSum* Solver::chunk_beam6_sums(std::uint32_t chunk, const Vec3* x, const Qua
   }
   const ElementShares& sh = beam6_chunk_shares_;
   const Owned<true> own{base, base + (ParticleId(1) << shift)};
-  beam6_forces<true>(beam6_plan_, model_.beam6s.awake_begin(), sh.items.data() + sh.begin[chunk],
+  beam6_forces<true>(beam6_chunk_plan_, model_.beam6s.awake_begin(), sh.begin[chunk],
                      sh.begin[chunk + 1] - sh.begin[chunk], own, x, q, settings.geometric_factor,
                      ChunkSink{sums, base, turns});
   return turns;
@@ -649,11 +652,13 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
         at[0] = hinges[e].i, at[1] = hinges[e].j, at[2] = hinges[e].k;
         return 3;
       });
-    if (n_beam6s > 0 && !beam6_shares_.current(model_, bound))
+    if (n_beam6s > 0 && (!beam6_shares_.current(model_, bound) || !beam6_thread_plan_.current(model_))) {
       beam6_shares_.derive(model_, bound, n_beam6s, [&](std::uint32_t e, ParticleId* at) {
         at[0] = plan.i[e], at[1] = plan.j[e];
         return 2;
       });
+      beam6_thread_plan_.derive(plan, beam6_shares_.items);
+    }
     std::vector<std::uint32_t>& bad = thread_bad_hinge_;
     bad.assign(threads, kNone);
     workers_->run(threads, [&](unsigned t) {
@@ -666,7 +671,7 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
       }
       if (n_beam6s > 0) {
         const ElementShares& sh = beam6_shares_;
-        beam6_forces<true>(plan, beam6s, sh.items.data() + sh.begin[t], sh.begin[t + 1] - sh.begin[t], own, x, q, gf,
+        beam6_forces<true>(beam6_thread_plan_, beam6s, sh.begin[t], sh.begin[t + 1] - sh.begin[t], own, x, q, gf,
                            ModelSink{F, S, T, K});
       }
     });
@@ -677,7 +682,7 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
     const std::uint32_t bad = hinge_forces<false>(hinges, nullptr, n_hinges, {}, x, F, S);
     if (bad != kNone) [[unlikely]]
       throw_degenerate_hinge(model_, hinges[bad], x);  // a zero-length link (coincident particles): stop, naming them
-    if (n_beam6s > 0) beam6_forces<false>(plan, beam6s, nullptr, n_beam6s, {}, x, q, gf, ModelSink{F, S, T, K});
+    if (n_beam6s > 0) beam6_forces<false>(plan, beam6s, 0, n_beam6s, {}, x, q, gf, ModelSink{F, S, T, K});
   }
   accumulate_couples(x, F);  // moments on 3-DOF particles (couples.cpp)
   for (Dart d : model_.clamp_darts.raw()) {  // clamped 3-DOF beam ends (Model::set_clamp)

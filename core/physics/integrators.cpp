@@ -524,15 +524,15 @@ double Solver::fused_step_bytes() const {
     membranes = double(cst_chunk_shares_.items.size()) * (4 + 12 + 16 + 8 + 1 + 12 + 1) +
                 double(corner_chunk_shares_.items.size()) * (4 + 4 + 1 + 72 + 72);
   }
-  // Per 6-DOF element of a chunk its index and the plan's ends, beam-end
-  // frames and constants, both nodes' frames gathered; per rotating
+  // Per 6-DOF element of a chunk the chunk plan's ends, beam-end frames
+  // and constants, both nodes' frames gathered; per rotating
   // particle its moment, torque and rotational stiffness written, inertia,
   // angular velocity read and written, then the drift: angular velocity
   // read, frame read and written (beam6_plan.hpp).
   double six_dof = 0;
   if (!P.rotational.empty()) {
     prepare_beam6_chunks();
-    six_dof = double(beam6_chunk_shares_.items.size()) * (4 + 8 + 64 + 64 + 64) +
+    six_dof = double(beam6_chunk_shares_.items.size()) * (8 + 64 + 64 + 64) +
               double(P.rotational.size()) * (4 + 1 + 1 + 24 + 24 + 8 + 8 + 24 + 24 + 24 + 32 + 32);
   }
   // Two passes: id, position read and written, velocity read.

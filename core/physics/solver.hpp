@@ -439,6 +439,8 @@ class Solver {
   mutable BarChunks bar_chunks_;
   mutable HingeChunks hinge_chunks_;
   mutable Beam6Plan beam6_plan_;  // forces.cpp: the 6-DOF elements as the step reads them
+  // The same in the order of beam6_shares_' and beam6_chunk_shares_' items.
+  mutable Beam6Plan beam6_thread_plan_, beam6_chunk_plan_;
   mutable std::vector<Couple> couples_;
   mutable std::pair<std::uint64_t, std::uint64_t> couples_at_{~0ull, ~0ull};  // model revision, moment revision
   std::unique_ptr<Workers> workers_;
