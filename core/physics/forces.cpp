@@ -80,11 +80,14 @@ struct HingeBlock {
   alignas(64) double fkx[kHingeBlock], fky[kHingeBlock], fkz[kHingeBlock];
 };
 
-TENDRIL_SIMD_CLONES void hinge_block(HingeBlock& h, std::uint32_t n) {
+// EI and rest curvature are read from `stiffness` and `curvature` (the
+// block's own copies, or the chunk's columns in place).
+TENDRIL_SIMD_CLONES void hinge_block(HingeBlock& h, const double* __restrict stiffness,
+                                     const double* __restrict curvature, std::uint32_t n) {
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
     const double ax = h.ax[m], ay = h.ay[m], az = h.az[m], bx = h.bx[m], by = h.by[m], bz = h.bz[m];
-    const double cx = h.cx[m], cy = h.cy[m], cz = h.cz[m], EI = h.EI[m];
+    const double cx = h.cx[m], cy = h.cy[m], cz = h.cz[m], EI = stiffness[m];
     const double La = std::sqrt(ax * ax + ay * ay + az * az), Lb = std::sqrt(bx * bx + by * by + bz * bz),
                  Lc = std::sqrt(cx * cx + cy * cy + cz * cz);
     const double ka = 4 * EI / (La * La * La), kb = 4 * EI / (Lb * Lb * Lb);
@@ -93,7 +96,7 @@ TENDRIL_SIMD_CLONES void hinge_block(HingeBlock& h, std::uint32_t n) {
     const double nn = std::sqrt(nx * nx + ny * ny + nz * nz);
     const bool bends = !(nn <= 0 || Lc <= 0);
     const double sin_alpha = nn / (La * Lb);
-    const double M = EI * (2 * sin_alpha / Lc - h.rest[m]);
+    const double M = EI * (2 * sin_alpha / Lc - curvature[m]);
     // a x nrm and b x nrm, normalized (divided by their norm when it is > 0)
     const double ux = ay * nz - az * ny, uy = az * nx - ax * nz, uz = ax * ny - ay * nx;
     const double vx = by * nz - bz * ny, vy = bz * nx - bx * nz, vz = bx * ny - by * nx;
@@ -224,7 +227,7 @@ std::uint32_t hinge_forces(const Hinge* hinges, const std::uint32_t* items, std:
       hb.EI[m] = h.EI;
       hb.rest[m] = h.rest_curvature;
     }
-    hinge_block(hb, n);
+    hinge_block(hb, hb.EI, hb.rest, n);
     for (std::uint32_t m = 0; m < n; ++m) {
       const std::uint32_t e = kShared ? items[e0 + m] : e0 + m;
       const Hinge& h = hinges[e];
@@ -460,10 +463,8 @@ std::uint32_t Solver::chunk_hinge_sums(std::uint32_t chunk, const Vec3* x, Force
       hb.ax[m] = a.x(), hb.ay[m] = a.y(), hb.az[m] = a.z();
       hb.bx[m] = b.x(), hb.by[m] = b.y(), hb.bz[m] = b.z();
       hb.cx[m] = c.x(), hb.cy[m] = c.y(), hb.cz[m] = c.z();
-      hb.EI[m] = H.EI[e];
-      hb.rest[m] = H.rest[e];
     }
-    hinge_block(hb, n);
+    hinge_block(hb, H.EI.data() + e0, H.rest.data() + e0, n);
     const std::uint32_t done = scatter_hinges(hb, n, hi + e0, hj + e0, hk + e0, own, sums);
     if (done < n) [[unlikely]]
       return H.hinge[e0 + done];
