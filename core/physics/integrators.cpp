@@ -487,8 +487,11 @@ void Solver::fused_kick_drift(bool whole_kick) {
         x[p] += dt * v[p];  // eq. 3.12
       }
     });
-  if (rotating)  // eq. 3.19, turned in blocks
-    drift_frames(P.rotational.raw().data(), std::uint32_t(P.rotational.size()), active, dt, w, R);
+  if (rotating)  // eq. 3.19, turned in blocks, each chunk's frames on the thread that kicked them
+    for_chunks([&](std::uint32_t c) {
+      const std::vector<std::uint32_t>& begin = rotating_chunk_shares_.begin;
+      drift_frames(rotating_by_chunk_.data() + begin[c], begin[c + 1] - begin[c], active, dt, w, R);
+    });
   record_energy(ke, momentum2);
   half_step_ = true;
 }
