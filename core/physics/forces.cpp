@@ -170,7 +170,7 @@ TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, const Beam6Plan& plan, std::
     const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
     const double N = pre[m] + EA * (l - L) / L;  // eq. 3.32 with K = EA / L
     b.k[m] = k_static[m] + (l > 0 && N > 0 ? gf * N / l : 0.0);  // eq. 3.47
-    b.kr[m] = kr[m];                                       // eq. 3.49
+    b.kr[m] = kr[m];                                             // eq. 3.49
     // Ea, Eb: the rotation matrices of q[i] * end_i and q[j] * end_j.
     double Ea[3][3], Eb[3][3];
     frame_matrix(b.qix[m], b.qiy[m], b.qiz[m], b.qiw[m], eix[m], eiy[m], eiz[m], eiw[m], Ea);
