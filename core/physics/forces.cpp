@@ -47,7 +47,7 @@ struct BarBlock {
 // in three copies (simd_clones.hpp).
 template <bool kUnitFactor>
 TENDRIL_SIMD_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* __restrict k, const double* __restrict rest,
-               const double* __restrict pre, const std::uint8_t* __restrict cable, double gf) {
+               const double* __restrict pre, const std::uint64_t* __restrict cable, double gf) {
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
     const double dx = b.dx[m], dy = b.dy[m], dz = b.dz[m];
@@ -406,7 +406,7 @@ ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const Vec3* x, std::uint64
       b.dz[m] = d.z();
     }
     const double *k = B.k.data() + e0, *rest = B.rest.data() + e0, *pre = B.prestress.data() + e0;
-    const std::uint8_t* cable = B.cable.data() + e0;
+    const std::uint64_t* cable = B.cable.data() + e0;
     if (unit_factor) bar_block<true>(b, n, k, rest, pre, cable, gf);
     else bar_block<false>(b, n, k, rest, pre, cable, gf);
     // The block's interior bars [0, interior), then its crossing ones.
