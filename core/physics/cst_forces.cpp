@@ -150,8 +150,9 @@ TENDRIL_SIMD_CLONES void cst_block(CstBlock& t, std::uint32_t n, double gf) {
 // the particles it owns, the pulls of its projected corners into their
 // slots.
 template <bool kShared, class Sink>
-void cst_forces(const CstPlan& plan, const Cst* csts, const std::uint32_t* items, std::uint32_t count,
-                Owned<kShared> own, const Vec3* x, double gf, Sink out, CstCornerSums* sums) {
+TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const std::uint32_t* items,
+                                    std::uint32_t count, Owned<kShared> own, const Vec3* x, double gf, Sink out,
+                                    CstCornerSums* sums) {
   const ParticleId *ti = plan.i.data(), *tj = plan.j.data(), *tk = plan.k.data();
   CstBlock tb;
   for (std::uint32_t e0 = 0; e0 < count; e0 += kCstBlock) {
@@ -234,8 +235,8 @@ void cst_forces(const CstPlan& plan, const Cst* csts, const std::uint32_t* items
 // slot is cleared for the next call. The slots slots[0 .. count) (a
 // chunk's) or all of them (slots null), those of particles it owns.
 template <bool kShared, class Sink>
-void project_corners(const CstPlan& plan, const std::uint32_t* slots, std::uint32_t count, Owned<kShared> own,
-                     Sink out, CstCornerSums* sums) {
+TENDRIL_SIMD_CLONES void project_corners(const CstPlan& plan, const std::uint32_t* slots, std::uint32_t count,
+                                         Owned<kShared> own, Sink out, CstCornerSums* sums) {
   if (!slots) count = std::uint32_t(plan.corner.size());
   for (std::uint32_t n = 0; n < count; ++n) {
     const std::uint32_t s = slots ? slots[n] : n;

@@ -361,7 +361,8 @@ bool late_waits(const BarChunks& B, const std::vector<std::uint32_t>& first, std
 
 std::uint64_t Solver::new_chunk_pass() { return ++chunk_passes; }
 
-ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const Vec3* x, std::uint64_t pass, bool fill_slots) const {
+TENDRIL_SIMD_CLONES ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const Vec3* x, std::uint64_t pass,
+                                                  bool fill_slots) const {
   const BarChunks& B = bar_chunks_;
   const BarChunks::Chunk& c = B.chunks[chunk];
   // Under the last split over threads (stale when none: a scratch used in
@@ -422,7 +423,8 @@ ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const Vec3* x, std::uint64
   return sums;
 }
 
-ForceSum* Solver::chunk_force_sums(std::uint32_t chunk, const Vec3* x, std::uint64_t pass) const {
+TENDRIL_SIMD_CLONES ForceSum* Solver::chunk_force_sums(std::uint32_t chunk, const Vec3* x,
+                                                    std::uint64_t pass) const {
   ForceSum* sums = nullptr;
   for (ChunkSumsScratch& scratch : chunk_sums_scratch)
     if (scratch.pass == pass && scratch.chunk == chunk) sums = scratch.data();
@@ -447,7 +449,7 @@ const HingeChunks& Solver::hinge_chunks() const {
 // hinges in the model's order, i's and k's pull then j's, whose stiffness
 // rides in the fourth lane (S - (-k) is S + k exactly; the + 0 added to i's
 // and k's is exact too, a sum that starts at +0 never being -0).
-std::uint32_t Solver::chunk_hinge_sums(std::uint32_t chunk, const Vec3* x, ForceSum* sums) const {
+TENDRIL_SIMD_CLONES std::uint32_t Solver::chunk_hinge_sums(std::uint32_t chunk, const Vec3* x, ForceSum* sums) const {
   const HingeChunks& H = hinge_chunks_;
   const std::uint32_t shift = bar_chunks_.shift;
   const ParticleId base = ParticleId(chunk) << shift;
@@ -508,7 +510,8 @@ namespace {
 thread_local std::vector<ChunkSumsScratch::Slot> chunk_turns_scratch;
 }  // namespace
 
-ForceSum* Solver::chunk_beam6_sums(std::uint32_t chunk, const Vec3* x, const Quat* q, ForceSum* sums) const {
+TENDRIL_SIMD_CLONES ForceSum* Solver::chunk_beam6_sums(std::uint32_t chunk, const Vec3* x, const Quat* q,
+                                                    ForceSum* sums) const {
   const std::uint32_t shift = bar_chunks_.shift;
   const ParticleId base = ParticleId(chunk) << shift;
   if (chunk_turns_scratch.size() < (std::size_t(1) << shift)) chunk_turns_scratch.resize(std::size_t(1) << shift);
