@@ -60,6 +60,7 @@ void BarChunks::derive(const Model& m) {
     rest[at_bar] = b.rest_length;
     prestress[at_bar] = b.prestress;
     cable[at_bar] = b.tension_only;
+    chunks[c].cables |= b.tension_only;
   }
   // Inboxes: the crossing bars by the chunk of j, in slot order.
   std::vector<std::uint32_t> in(n_chunks + 1, 0);

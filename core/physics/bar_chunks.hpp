@@ -33,6 +33,7 @@ struct BarChunks {
     std::uint32_t slot_begin = 0;                                  // slot of its first crossing bar
     std::uint32_t inbox_begin = 0, inbox_end = 0;                  // into inbox_*
     std::uint32_t first_source = 0;  // the smallest chunk with a bar into this one's inbox (else itself)
+    bool cables = false;             // a bar of it is tension only (else the step never reads `cable`)
   };
 
   // The number of particles per chunk for a model of this capacity: a power

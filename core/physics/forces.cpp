@@ -44,8 +44,9 @@ struct BarBlock {
 };
 
 // Eq. 3.32 (no tension in a slack cable), eq. 3.33's T / L and eq. 3.35,
-// in three copies (simd_clones.hpp).
-template <bool kUnitFactor>
+// in three copies (simd_clones.hpp). Without cables (kCables false: none in
+// the chunk) T is T0 and the cable column is not streamed.
+template <bool kUnitFactor, bool kCables>
 TENDRIL_SIMD_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* __restrict k, const double* __restrict rest,
                const double* __restrict pre, const std::uint64_t* __restrict cable, double gf) {
 #pragma omp simd
@@ -53,7 +54,7 @@ TENDRIL_SIMD_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* _
     const double dx = b.dx[m], dy = b.dy[m], dz = b.dz[m];
     const double L = std::sqrt(dx * dx + dy * dy + dz * dz);
     const double T0 = pre[m] + k[m] * (L - rest[m]);
-    const double T = cable[m] && T0 < 0 ? 0.0 : T0;
+    const double T = kCables && cable[m] && T0 < 0 ? 0.0 : T0;
     const double c = T / L;
     const double g = kUnitFactor ? c : gf * T / L;
     b.s[m] = k[m] + (L > 0 && T > 0 ? g : 0.0);
@@ -408,8 +409,13 @@ TENDRIL_SIMD_CLONES ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const 
     }
     const double *k = B.k.data() + e0, *rest = B.rest.data() + e0, *pre = B.prestress.data() + e0;
     const std::uint64_t* cable = B.cable.data() + e0;
-    if (unit_factor) bar_block<true>(b, n, k, rest, pre, cable, gf);
-    else bar_block<false>(b, n, k, rest, pre, cable, gf);
+    if (c.cables) {
+      if (unit_factor) bar_block<true, true>(b, n, k, rest, pre, cable, gf);
+      else bar_block<false, true>(b, n, k, rest, pre, cable, gf);
+    } else {
+      if (unit_factor) bar_block<true, false>(b, n, k, rest, pre, cable, gf);
+      else bar_block<false, false>(b, n, k, rest, pre, cable, gf);
+    }
     // The block's interior bars [0, interior), then its crossing ones.
     const std::uint32_t interior = std::clamp(c.crossing_begin, e0, e0 + n) - e0;
     const std::uint32_t first_slot = c.slot_begin + (e0 + interior - c.crossing_begin);

@@ -516,9 +516,13 @@ double Solver::fused_step_bytes() const {
   // written, lock, position gathered by the bars, velocity read and
   // written, in one pass the new position written.
   const double kick = particles * (4 + 24 + (masses ? 16 : 0) + 24 + 8 + 1 + 24 + 24 + 24 + (one_pass ? 24 : 0));
-  // Per bar its ends, k, rest length, prestress and cable flag; per crossing
-  // bar its slot written, then read through the inbox (particle, slot).
-  const double elements = bars * (4 + 4 + 8 + 8 + 8 + 8) + crossing * (24 + 8 + 4 + 4 + 24 + 8);
+  // Per bar its ends, k, rest length, prestress, and its cable flag in a
+  // chunk with cables; per crossing bar its slot written, then read through
+  // the inbox (particle, slot).
+  double flagged = 0;
+  for (const BarChunks::Chunk& c : B.chunks)
+    if (c.cables) flagged += c.bars_end - c.bars_begin;
+  const double elements = bars * (4 + 4 + 8 + 8 + 8) + flagged * 8 + crossing * (24 + 8 + 4 + 4 + 24 + 8);
   // Per hinge of a chunk its ends, EI and rest curvature (hinge_chunks.hpp).
   const double hinges = model_.hinges.awake > 0 ? double(hinge_chunks().i.size()) * (4 + 4 + 4 + 8 + 8) : 0.0;
   // Per triangle of a chunk its index and the plan's ends, stresses,
