@@ -50,7 +50,7 @@ struct BarChunks {
   // Bars, chunk by chunk: ends, k = EA / L, rest length, prestress, cable
   // (tension only: 1, else 0; eight bytes like the doubles beside it, so
   // that the vectorised loop keeps one bar per double lane: a byte column
-  // made GCC take 32 bars an iteration and spill, 3x slower).
+  // made GCC take 32 bars an iteration and spill: 1.5x slower).
   std::vector<ParticleId> i, j;
   std::vector<double> k, rest, prestress;
   std::vector<std::uint64_t> cable;

@@ -268,7 +268,7 @@ namespace {
 // local (no reloads through captured references) and the free axes of a
 // lock looked up; the arithmetic of kick_drift, term for term. Scalar, but
 // in three copies (simd_clones.hpp): the AVX copies' three-operand forms
-// and 4-lane loads of the sums save a tenth of the bar step.
+// and 4-lane loads of the sums take a fifth fewer instructions.
 struct KickArgs {
   const std::uint8_t* lock;
   const double *point_mass, *lumped_mass;
