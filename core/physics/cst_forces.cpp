@@ -234,9 +234,12 @@ TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const 
 // once per triangle, the later visits adding zeros: -0 + 0 is +0). Each
 // slot is cleared for the next call. The slots slots[0 .. count) (a
 // chunk's) or all of them (slots null), those of particles it owns.
+// One copy, not three: GCC's AVX copies of it move a register with a form of
+// vmovq that valgrind 3.19 cannot decode (SIGILL), and callgrind is how the
+// step's instructions are counted (docs/performance.md).
 template <bool kShared, class Sink>
-TENDRIL_SIMD_CLONES void project_corners(const CstPlan& plan, const std::uint32_t* slots, std::uint32_t count,
-                                         Owned<kShared> own, Sink out, CstCornerSums* sums) {
+void project_corners(const CstPlan& plan, const std::uint32_t* slots, std::uint32_t count, Owned<kShared> own,
+                     Sink out, CstCornerSums* sums) {
   if (!slots) count = std::uint32_t(plan.corner.size());
   for (std::uint32_t n = 0; n < count; ++n) {
     const std::uint32_t s = slots ? slots[n] : n;
