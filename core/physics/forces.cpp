@@ -47,8 +47,9 @@ struct BarBlock {
 // in three copies (simd_clones.hpp). Without cables (kCables false: none in
 // the chunk) T is T0 and the cable column is not streamed.
 template <bool kUnitFactor, bool kCables>
-TENDRIL_SIMD_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* __restrict k, const double* __restrict rest,
-               const double* __restrict pre, const std::uint64_t* __restrict cable, double gf) {
+TENDRIL_SIMD_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* __restrict k,
+                                   const double* __restrict rest, const double* __restrict pre,
+                                   const std::uint64_t* __restrict cable, double gf) {
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
     const double dx = b.dx[m], dy = b.dy[m], dz = b.dz[m];
