@@ -328,6 +328,29 @@ TENDRIL_SIMD_CLONES KickSums kick_particles(const ParticleId* __restrict ids, st
   return sums;
 }
 
+// fused_kick_drift's move back to the kinetic peak (eq. 3.29-3.31) of one
+// chunk's particles, kick_drift's arithmetic term for term, with the
+// kick's local pointers and copies (a lambda reloaded its captured
+// pointers after every store).
+template <bool kPhysical>
+TENDRIL_SIMD_CLONES void peak_back_particles(const ParticleId* __restrict ids, std::uint32_t begin,
+                                             std::uint32_t end, const KickArgs& a, double q) {
+  const std::uint8_t* __restrict lock = a.lock;
+  const double* __restrict S = a.S;
+  const Vec3* __restrict F = a.F;
+  Vec3* __restrict v = a.v;
+  Vec3* __restrict x = a.x;
+  const double mass_scale = a.mass_scale, dt = a.dt;
+  for (std::uint32_t n = begin; n < end; ++n) {
+    const ParticleId p = ids[n];
+    const Vec3 free = free_of[lock[p] & kLockTranslation];
+    const Vec3 Ff = F[p].cwiseProduct(free);
+    const double M = kPhysical ? physical_mass(a.point_mass[p], a.lumped_mass[p], free) : mass_scale * S[p];
+    x[p] += dt * v[p] - dt * (1 + q) * v[p] + 0.5 * dt * dt * q * Ff / M;
+    v[p].setZero();
+  }
+}
+
 }  // namespace
 
 bool Solver::fused_kick_drift_applies() const {
@@ -380,11 +403,6 @@ void Solver::fused_kick_drift(bool whole_kick) {
   const double *point_mass = P.point_mass.data(), *lumped_mass = P.lumped_mass.data();
   Vec3 *F = P.force.data(), *v = P.velocity.data(), *x = P.position.data();
   double* S = P.stiffness.data();
-  // The mass of eq. 3.4 (or the physical one) as prepare_masses sets it;
-  // 0 when the step cannot use it.
-  auto mass_of = [&](ParticleId p, const Vec3& free) {
-    return physical ? physical_mass(point_mass[p], lumped_mass[p], free) : mass_scale * S[p];
-  };
   const KickArgs args{lock, point_mass, lumped_mass, S, F, v, x, xn, mass_scale, keep, first * B * dt, dt};
   // Rotation: the torques, kicked as kick_drift kicks them.
   const std::uint8_t* active = P.active.data();
@@ -468,13 +486,9 @@ void Solver::fused_kick_drift(bool whole_kick) {
     const double q = peak_fraction(ke);
     for_chunks([&](std::uint32_t c) {
       const BarChunks::Chunk& ch = chunks.chunks[c];
-      for (std::uint32_t n = ch.particles_begin; n < ch.particles_end; ++n) {
-        const ParticleId p = chunks.particles[n];
-        const Vec3 free = free_axes(lock[p]);
-        const Vec3 Ff = F[p].cwiseProduct(free);
-        x[p] += dt * v[p] - dt * (1 + q) * v[p] + 0.5 * dt * dt * q * Ff / mass_of(p, free);
-        v[p].setZero();
-      }
+      const ParticleId* ids = chunks.particles.data();
+      if (physical) peak_back_particles<true>(ids, ch.particles_begin, ch.particles_end, args, q);
+      else peak_back_particles<false>(ids, ch.particles_begin, ch.particles_end, args, q);
     });
     if (rotating) turn_frames_back(q);
     record_reset();
