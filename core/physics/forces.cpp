@@ -6,6 +6,7 @@
 // thread; the other elements follow on one thread, in the model's order.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 
 #include "physics/element_forces.hpp"
@@ -369,7 +370,7 @@ TENDRIL_SIMD_CLONES ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const 
   const BarChunks::Chunk& c = B.chunks[chunk];
   // Under the last split over threads (stale when none: a scratch used in
   // vain).
-  ChunkSumsScratch& scratch = chunk_sums_scratch[late_waits(B, thread_first_chunk_, chunk) ? 1 : 0];
+  ChunkSumsScratch& scratch = chunk_sums_scratch[late_waits(B, chunk_balance_.first(), chunk) ? 1 : 0];
   const std::size_t chunk_size = std::size_t(1) << B.shift;
   if (scratch.sums.size() < chunk_size) scratch.sums.resize(chunk_size);
   ForceSum* sums = scratch.data();
@@ -586,18 +587,21 @@ void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(
     }
     return;
   }
-  const unsigned threads = split_chunks();
-  const std::vector<std::uint32_t>& first = thread_first_chunk_;
+  const unsigned threads = unsigned(std::clamp<std::uint32_t>(std::uint32_t(settings.threads), 1, n));
+  const std::vector<std::uint32_t>& first = chunk_balance_.split(B, threads);
   // A chunk whose inbox draws on an earlier thread's range waits, after
   // its own thread's range, for the bodies of those chunks (each marks its
   // end with this pass's round): no second run over the threads.
   if (chunk_done_.size() < n) chunk_done_ = std::vector<std::atomic<std::uint64_t>>(n);
+  thread_busy_.assign(threads, 0.0);
   const std::uint64_t round = ++chunk_round_;
   auto mark_done = [&](std::uint32_t k) {
     chunk_done_[k].store(round, std::memory_order_release);
     chunk_done_[k].notify_all();
   };
+  using Clock = std::chrono::steady_clock;
   workers_->run(threads, [&](unsigned t) {
+    const Clock::time_point start = Clock::now();
     bool deferred = false;
     try {
       for (std::uint32_t k = first[t]; k < first[t + 1]; ++k) {
@@ -610,13 +614,17 @@ void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(
       for (std::uint32_t k = first[t]; k < first[t + 1]; ++k) mark_done(k);
       throw;
     }
-    if (!deferred) return;
-    for (std::uint32_t k = first[t]; k < first[t + 1]; ++k) {
+    Clock::duration waited{};
+    for (std::uint32_t k = first[t]; deferred && k < first[t + 1]; ++k) {
       if (!late_waits(B, first, k)) continue;
+      const Clock::time_point wait = Clock::now();
       for (std::uint32_t c = B.chunks[k].first_source; c < first[t]; ++c) wait_for(chunk_done_[c], round);
+      waited += Clock::now() - wait;
       late(k);
     }
+    thread_busy_[t] = std::chrono::duration<double>(Clock::now() - start - waited).count();
   });
+  chunk_balance_.measured(B, thread_busy_);
 }
 
 void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body) const {

@@ -25,6 +25,7 @@
 
 #include "model/model.hpp"
 #include "physics/bar_chunks.hpp"
+#include "physics/chunk_balance.hpp"
 #include "physics/beam6_plan.hpp"
 #include "physics/cst_plan.hpp"
 #include "physics/element_shares.hpp"
@@ -298,16 +299,18 @@ class Solver {
   ForceSum* chunk_beam6_sums(std::uint32_t c, const Vec3* x, const Quat* q, ForceSum* sums) const;
   const std::vector<ParticleId>& chunk_bounds() const;  // each chunk's first id, and the end
   // body(c) then late(c) for every chunk, the chunks split over the threads
-  // in contiguous ranges; a chunk whose inbox draws on an earlier thread's
-  // range runs late(c) after its thread's range, once the bodies it draws
-  // on are done.
+  // in contiguous ranges sized by the threads' measured speeds
+  // (ChunkBalance); a chunk whose inbox draws on an earlier thread's range
+  // runs late(c) after its thread's range, once the bodies it draws on are
+  // done.
   // `threaded` false: on the calling thread alone.
   void for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(std::uint32_t)> late,
                   bool threaded = true) const;
   // The same body(c) for every chunk, in parallel.
   void for_chunks(FunctionRef<void(std::uint32_t)> body) const;
-  // The threads' contiguous ranges of chunks (thread_first_chunk_) for
-  // settings.threads; returns how many threads get one.
+  // The threads' contiguous ranges of chunks of about equal particle counts
+  // (thread_first_chunk_) for settings.threads, the particles each thread
+  // owns in the element loops; returns how many threads get one.
   unsigned split_chunks() const;
   // The element loops on threads (ElementShares): how many, and the
   // particle ids each owns, those of its chunks.
@@ -452,7 +455,9 @@ class Solver {
     double torque2 = 0;               // the largest free torque squared
   };
   std::vector<ChunkSums> chunk_sums_;
-  mutable std::vector<std::uint32_t> thread_first_chunk_;  // for_chunks: each thread's range
+  mutable std::vector<std::uint32_t> thread_first_chunk_;  // split_chunks: each thread's range
+  mutable ChunkBalance chunk_balance_;                     // for_chunks: each thread's range, by measured speed
+  mutable std::vector<double> thread_busy_;                // for_chunks: each thread's busy seconds in the last run
   mutable std::vector<std::atomic<std::uint64_t>> chunk_done_;  // for_chunks: the round of each chunk's last body
   mutable std::uint64_t chunk_round_ = 0;
   mutable std::vector<ParticleId> element_bound_;            // element_bounds
