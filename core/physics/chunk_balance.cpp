@@ -28,15 +28,17 @@ void ChunkBalance::measured(const BarChunks& B, const std::vector<double>& busy)
   const unsigned threads = unsigned(share_.size());
   if (busy.size() != threads || first_.size() != threads + 1) return;
   // Particles a second per thread; a run too short to time (or a thread
-  // without particles) leaves the shares as they were.
-  std::vector<double> speed(threads);
-  double sum = 0, time = 0;
-  for (unsigned t = 0; t < threads; ++t) {
+  // without particles) leaves the shares as they were. (Two passes, so
+  // that a step allocates nothing.)
+  auto speed = [&](unsigned t) {
     const std::uint32_t a = first_[t], b = first_[t + 1];
     const double particles = a < b ? double(B.chunks[b - 1].particles_end - B.chunks[a].particles_begin) : 0.0;
-    if (!(particles > 0 && busy[t] > 0)) return;
-    speed[t] = particles / busy[t];
-    sum += speed[t];
+    return particles > 0 && busy[t] > 0 ? particles / busy[t] : 0.0;
+  };
+  double sum = 0, time = 0;
+  for (unsigned t = 0; t < threads; ++t) {
+    if (!(speed(t) > 0)) return;
+    sum += speed(t);
     time += busy[t];
   }
   if (time < 20e-6 * threads) return;
@@ -44,7 +46,7 @@ void ChunkBalance::measured(const BarChunks& B, const std::vector<double>& busy)
   // quarter of an equal one, so that a thread stopped once is not dropped.
   double total = 0;
   for (unsigned t = 0; t < threads; ++t) {
-    share_[t] = std::max(0.8 * share_[t] + 0.2 * speed[t] / sum, 0.25 / threads);
+    share_[t] = std::max(0.8 * share_[t] + 0.2 * speed(t) / sum, 0.25 / threads);
     total += share_[t];
   }
   for (double& s : share_) s /= total;

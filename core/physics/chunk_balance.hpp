@@ -3,7 +3,7 @@
 // ranges, each thread's as many particles as its measured speed earns. On a
 // shared machine one core can run the step 1.4x slower than the other
 // (another guest on its sibling), and equal ranges then left the faster
-// thread waiting a third of a 10K step. The split never changes a number:
+// thread waiting a quarter of a 10K step. The split never changes a number:
 // every sum keeps its chunk order whoever runs the chunk.
 #include <cstdint>
 #include <vector>

@@ -25,8 +25,8 @@
 
 #include "model/model.hpp"
 #include "physics/bar_chunks.hpp"
-#include "physics/chunk_balance.hpp"
 #include "physics/beam6_plan.hpp"
+#include "physics/chunk_balance.hpp"
 #include "physics/cst_plan.hpp"
 #include "physics/element_shares.hpp"
 #include "physics/hinge_chunks.hpp"
