@@ -1,6 +1,7 @@
 #pragma once
-// The split of the bar chunks over the threads of for_chunks: contiguous
-// ranges, each thread's as many particles as its measured speed earns. On a
+// The split of the bar chunks over threads: contiguous ranges, equal until
+// measured (the element loops' owners, Solver::element_bounds), and in
+// for_chunks each thread's as many particles as its measured speed earns. On a
 // shared machine one core can run the step 1.4x slower than the other
 // (another guest on its sibling), and equal ranges then left the faster
 // thread waiting a quarter of a 10K step. The split never changes a number:

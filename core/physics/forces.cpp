@@ -539,24 +539,6 @@ TENDRIL_SIMD_CLONES ForceSum* Solver::chunk_beam6_sums(std::uint32_t chunk, cons
   return turns;
 }
 
-unsigned Solver::split_chunks() const {
-  const BarChunks& B = bar_chunks_;
-  const std::uint32_t n = std::uint32_t(B.chunks.size());
-  const unsigned threads = unsigned(std::clamp<std::uint32_t>(std::uint32_t(settings.threads), 1, n));
-  // Contiguous ranges of about equal particle counts.
-  std::vector<std::uint32_t>& first = thread_first_chunk_;
-  first.assign(threads + 1, n);  // allocates when the thread count grows only
-  first[0] = 0;
-  const std::size_t total = B.particles.size();
-  std::uint32_t c = 0;
-  for (unsigned t = 1; t < threads; ++t) {
-    const std::size_t target = total * t / threads;
-    while (c < n && B.chunks[c].particles_end <= target) ++c;
-    first[t] = std::max(c, first[t - 1]);
-  }
-  return threads;
-}
-
 unsigned Solver::element_threads() const {
   const std::uint32_t n = std::uint32_t(bar_chunks().chunks.size());
   return unsigned(std::clamp<std::uint32_t>(std::uint32_t(settings.threads), 1, n));
@@ -570,9 +552,10 @@ bool Solver::elements_on_threads() const {
 
 const std::vector<ParticleId>& Solver::element_bounds() const {
   const BarChunks& B = bar_chunks();
-  const unsigned threads = split_chunks();
+  const unsigned threads = element_threads();
+  const std::vector<std::uint32_t>& first = owner_split_.split(B, threads);  // never measured: equal shares
   element_bound_.resize(threads + 1);
-  for (unsigned t = 0; t <= threads; ++t) element_bound_[t] = ParticleId(thread_first_chunk_[t]) << B.shift;
+  for (unsigned t = 0; t <= threads; ++t) element_bound_[t] = ParticleId(first[t]) << B.shift;
   return element_bound_;
 }
 
@@ -580,14 +563,14 @@ void Solver::for_chunks(FunctionRef<void(std::uint32_t)> body, FunctionRef<void(
                         bool threaded) const {
   const BarChunks& B = bar_chunks_;
   const std::uint32_t n = std::uint32_t(B.chunks.size());
-  if (!threaded || std::clamp<std::uint32_t>(std::uint32_t(settings.threads), 1, n) == 1) {
+  const unsigned threads = threaded ? unsigned(std::clamp<std::uint32_t>(std::uint32_t(settings.threads), 1, n)) : 1;
+  if (threads == 1) {
     for (std::uint32_t c = 0; c < n; ++c) {
       body(c);
       late(c);
     }
     return;
   }
-  const unsigned threads = unsigned(std::clamp<std::uint32_t>(std::uint32_t(settings.threads), 1, n));
   const std::vector<std::uint32_t>& first = chunk_balance_.split(B, threads);
   // A chunk whose inbox draws on an earlier thread's range waits, after
   // its own thread's range, for the bodies of those chunks (each marks its

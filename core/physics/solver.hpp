@@ -308,12 +308,10 @@ class Solver {
                   bool threaded = true) const;
   // The same body(c) for every chunk, in parallel.
   void for_chunks(FunctionRef<void(std::uint32_t)> body) const;
-  // The threads' contiguous ranges of chunks of about equal particle counts
-  // (thread_first_chunk_) for settings.threads, the particles each thread
-  // owns in the element loops; returns how many threads get one.
-  unsigned split_chunks() const;
   // The element loops on threads (ElementShares): how many, and the
-  // particle ids each owns, those of its chunks.
+  // particle ids each owns, those of its chunks (contiguous ranges of about
+  // equal particle counts, fixed: the shares are derived again when they
+  // move).
   unsigned element_threads() const;
   bool elements_on_threads() const;  // element_threads() > 1 and element_threads_from reached
   const std::vector<ParticleId>& element_bounds() const;
@@ -455,9 +453,9 @@ class Solver {
     double torque2 = 0;               // the largest free torque squared
   };
   std::vector<ChunkSums> chunk_sums_;
-  mutable std::vector<std::uint32_t> thread_first_chunk_;  // split_chunks: each thread's range
-  mutable ChunkBalance chunk_balance_;                     // for_chunks: each thread's range, by measured speed
-  mutable std::vector<double> thread_busy_;                // for_chunks: each thread's busy seconds in the last run
+  mutable ChunkBalance owner_split_;    // element_bounds: each thread's range, equal shares
+  mutable ChunkBalance chunk_balance_;  // for_chunks: each thread's range, by measured speed
+  mutable std::vector<double> thread_busy_;  // for_chunks: each thread's busy seconds in the last run
   mutable std::vector<std::atomic<std::uint64_t>> chunk_done_;  // for_chunks: the round of each chunk's last body
   mutable std::uint64_t chunk_round_ = 0;
   mutable std::vector<ParticleId> element_bound_;            // element_bounds
