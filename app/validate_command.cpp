@@ -1,7 +1,7 @@
-// `tendril validate [--csv FILE] [--plots DIR] [--quick] [--case NAME]`: runs
-// every validation case (validate/cases/) with each integrator, formulation
-// and resolution, prints the table, and fails when a case under its default
-// settings misses its tolerance.
+// `tendril validate [--csv FILE] [--plots DIR] [--quick] [--defaults-only]
+// [--case NAME]`: runs every validation case (validate/cases/) with each
+// integrator, formulation and resolution, prints the table, and fails when a
+// case under its default settings misses its tolerance.
 #include <unistd.h>
 
 #include <algorithm>
@@ -26,7 +26,7 @@ namespace {
 
 struct ValidateArguments {
   std::string csv, plots;
-  bool quick = false;
+  bool quick = false, defaults_only = false;
   std::vector<std::string> cases;
 };
 
@@ -84,6 +84,7 @@ int validate(const ValidateArguments& a) {
   bool output_failed = false;
   for (const Case* c : selected) {
     for (const Setting& s : matrix(*c, options.quick)) {
+      if (a.defaults_only && !is_default(*c, s)) continue;
       rows.push_back(run_setting(*c, s, options));
       table.row(rows.back());
       if (rows.back().is_default && !rows.back().passes()) failed_defaults.push_back(rows.back());
@@ -118,6 +119,8 @@ Command validate_command() {
                 ->type_name("DIR");
             cli.add_flag("--quick", a->quick,
                          "every integrator at the coarsest resolution, the defaults at theirs (for CI)");
+            cli.add_flag("--defaults-only", a->defaults_only,
+                         "each case under its default settings alone: the tolerance check without the survey");
             cli.add_option("--case", a->cases, "runs only this case (repeatable)")
                 ->type_name("NAME")
                 ->expected(1)
