@@ -18,13 +18,14 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "physics/lanes.hpp"
 
 namespace tendril {
 
 // A particle's force (x, y, z) and stiffness as the bar step sums them: one
 // vector of four, so that a bar adds into an end with one load, addition
 // and store (two with SSE2), each lane in the order the scalar sums took.
-using ForceSum = double __attribute__((vector_size(32)));
+using ForceSum = Lanes;
 
 struct BarChunks {
   struct Chunk {
