@@ -297,7 +297,23 @@ TENDRIL_SIMD_CLONES void scatter_bars(const BarBlock& b, std::uint32_t n, std::u
                                       const ParticleId* __restrict bi, const ParticleId* __restrict bj, ParticleId base,
                                       ForceSum* __restrict sums, Vec3* slot_f, double* slot_s) {
   const ForceSum flip = {1.0, 1.0, 1.0, -1.0};
-  for (std::uint32_t m = 0; m < interior; ++m) {
+  // Four bars' columns turned into their rows at once, then added bar after
+  // bar, end after end, as one bar at a time adds them.
+  std::uint32_t m = 0;
+  for (; m + 4 <= interior; m += 4) {
+    ForceSum r[4];
+    __builtin_memcpy(&r[0], b.fx + m, sizeof(ForceSum));
+    __builtin_memcpy(&r[1], b.fy + m, sizeof(ForceSum));
+    __builtin_memcpy(&r[2], b.fz + m, sizeof(ForceSum));
+    __builtin_memcpy(&r[3], b.s + m, sizeof(ForceSum));
+    transpose(r[0], r[1], r[2], r[3]);
+#pragma GCC unroll 4
+    for (std::uint32_t l = 0; l < 4; ++l) {
+      sums[bi[m + l] - base] += r[l];
+      sums[bj[m + l] - base] -= r[l] * flip;
+    }
+  }
+  for (; m < interior; ++m) {
     const ForceSum r = {b.fx[m], b.fy[m], b.fz[m], b.s[m]};
     sums[bi[m] - base] += r;
     sums[bj[m] - base] -= r * flip;
@@ -320,7 +336,39 @@ TENDRIL_SIMD_CLONES std::uint32_t scatter_hinges(const HingeBlock& hb, std::uint
                                                  const ParticleId* __restrict hj, const ParticleId* __restrict hk,
                                                  Owned<true> own, ForceSum* __restrict sums) {
   const ParticleId base = own.lo;
-  for (std::uint32_t m = 0; m < n; ++m) {
+  // Four hinges' columns turned into their rows at once, then added hinge
+  // after hinge, end after end, as the loop below adds them; a group with a
+  // stiffness that is not finite is left to that loop, which stops there.
+  std::uint32_t m = 0;
+  for (; m + 4 <= n; m += 4) {
+    Lanes k, ri[4], rk[4];
+    __builtin_memcpy(&k, hb.k + m, sizeof(Lanes));
+    const Lanes finite = k - k;  // 0 where k is finite, NaN elsewhere
+    if (!(finite[0] == 0 && finite[1] == 0 && finite[2] == 0 && finite[3] == 0)) [[unlikely]]
+      break;
+    __builtin_memcpy(&ri[0], hb.fix + m, sizeof(Lanes));
+    __builtin_memcpy(&ri[1], hb.fiy + m, sizeof(Lanes));
+    __builtin_memcpy(&ri[2], hb.fiz + m, sizeof(Lanes));
+    ri[3] = Lanes{0, 0, 0, 0};
+    transpose(ri[0], ri[1], ri[2], ri[3]);
+    __builtin_memcpy(&rk[0], hb.fkx + m, sizeof(Lanes));
+    __builtin_memcpy(&rk[1], hb.fky + m, sizeof(Lanes));
+    __builtin_memcpy(&rk[2], hb.fkz + m, sizeof(Lanes));
+    rk[3] = Lanes{0, 0, 0, 0};
+    transpose(rk[0], rk[1], rk[2], rk[3]);
+#pragma GCC unroll 4
+    for (std::uint32_t l = 0; l < 4; ++l) {
+      const ParticleId i = hi[m + l], j = hj[m + l], kk = hk[m + l];
+      if (own(i)) sums[i - base] += ri[l];
+      if (own(kk)) sums[kk - base] += rk[l];
+      if (own(j)) {
+        Lanes rj = ri[l] + rk[l];
+        rj[3] = -k[l];
+        sums[j - base] -= rj;
+      }
+    }
+  }
+  for (; m < n; ++m) {
     if (!std::isfinite(hb.k[m])) [[unlikely]]
       return m;
     const ParticleId i = hi[m], j = hj[m], k = hk[m];
