@@ -209,21 +209,22 @@ TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const 
         continue;
       }
       const Vec3 nrm(tb.nx[m], tb.ny[m], tb.nz[m]);
-      auto add = [&](ParticleId p, int corner, const Vec3& f) TENDRIL_INLINE {
+      // A corner's force and stiffness go to different lanes of a sum, so
+      // adding them at once (one 4-lane addition in a chunk's sums) adds to
+      // each lane what the force's and then the stiffness's addition add.
+      auto add = [&](ParticleId p, int corner, const Vec3& f, double stiffness) TENDRIL_INLINE {
         if (!(along_normal >> corner & 1)) {
-          out.force(p, f);
+          out.force_stiffness(p, f, stiffness);
           return;
         }
         CstCornerSums& c = sums[slot[corner]];
         c.pull += f;  // projected below, once all its triangles are in
         c.normal += c.normal.dot(nrm) < 0 ? Vec3(-nrm) : nrm;
+        out.stiffness(p, stiffness);
       };
-      if (own_i) add(i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]));
-      if (own_j) add(j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]));
-      if (own_k) add(k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]));
-      if (own_i) out.stiffness(i, tb.si[m]);
-      if (own_j) out.stiffness(j, tb.sj[m]);
-      if (own_k) out.stiffness(k, tb.sk[m]);
+      if (own_i) add(i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]), tb.si[m]);
+      if (own_j) add(j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]), tb.sj[m]);
+      if (own_k) add(k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]), tb.sk[m]);
     }
   }
 }
