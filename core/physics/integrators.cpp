@@ -329,6 +329,11 @@ TENDRIL_SIMD_CLONES KickSums kick_particles(const ParticleId* __restrict ids, st
   return sums;
 }
 
+// A vector's row of four lanes, the fourth 0. (Filled by reference: a
+// 32-byte vector returned by value draws GCC's ABI warning in the portable
+// copy, inlined or not.)
+[[gnu::always_inline]] inline void load_row(Lanes& row, const Vec3& a) { row = Lanes{a.x(), a.y(), a.z(), 0.0}; }
+
 // kick_particles<false, kDrift> four particles at a time, each in a lane:
 // the sums' rows and the velocities are turned into columns, the division,
 // the velocities' update, the checks and the norms take one vector operation
@@ -339,10 +344,6 @@ TENDRIL_SIMD_CLONES KickSums kick_particles(const ParticleId* __restrict ids, st
 // that is not finite or a mass that is not positive goes through the
 // scalar loop, which finds what is wrong as before. (Measured in stop 37:
 // a fifth fewer instructions in the kick; callgrind, docs/performance.md.)
-// (Filled by reference: a 32-byte vector returned by value draws GCC's
-// ABI warning in the portable copy, inlined or not.)
-[[gnu::always_inline]] inline void load_row(Lanes& row, const Vec3& a) { row = Lanes{a.x(), a.y(), a.z(), 0.0}; }
-
 template <bool kDrift>
 TENDRIL_SIMD_CLONES KickSums kick_particles_in_lanes(const ParticleId* __restrict ids, std::uint32_t begin,
                                                      std::uint32_t end, const KickArgs& a,
