@@ -18,9 +18,12 @@ namespace tendril {
 // arriving, and an edge may take either of its darts as its start.
 inline Quat end_flip() { return Quat(0.0, 0.0, 0.0, 1.0); }
 
+// Below this squared angle sin(t/2)/t is 1/2 to double precision.
+constexpr double kSmallAngle2 = 1e-24;
+
 inline Quat rotation_of(const Vec3& r) {
   const double theta2 = r.squaredNorm();
-  if (theta2 < 1e-24) {  // sin(t/2)/t = 1/2 to double precision
+  if (theta2 < kSmallAngle2) {
     Quat q(1.0, 0.5 * r.x(), 0.5 * r.y(), 0.5 * r.z());
     q.normalize();
     return q;

@@ -7,7 +7,10 @@
 // (Geometry_SIMD.h's quat_product, a 4-vector's squaredNorm as
 // (x x + z z) + (y y + w w)), so the frames are those of rotation_of and
 // Quaternion::normalized bit for bit (tests/physics/test_beam6_block.cpp).
-// A rotation below rotation_of's small-angle bound takes rotation_of itself.
+// A rotation below rotation_of's small-angle bound takes its (1, r / 2) in
+// the same loop: near equilibrium, or at the start of a run, that is most
+// frames, and one at a time through rotation_of they cost the 100K 6-DOF grid
+// a third of its step.
 #include "physics/frame_drift.hpp"
 
 #include <algorithm>
@@ -25,6 +28,7 @@ constexpr std::uint32_t kFrameBlock = 64;
 
 struct FrameBlock {
   alignas(64) double rx[kFrameBlock], ry[kFrameBlock], rz[kFrameBlock], theta[kFrameBlock];
+  alignas(64) double small[kFrameBlock];  // 1: below rotation_of's small-angle bound (a double, to stay in vectors)
   alignas(64) double sin_half[kFrameBlock], cos_half[kFrameBlock];
   alignas(64) double qx[kFrameBlock], qy[kFrameBlock], qz[kFrameBlock], qw[kFrameBlock];
 };
@@ -36,6 +40,7 @@ TENDRIL_SIMD_CLONES void half_angles(FrameBlock& f, std::uint32_t n) {
   double beyond = 0;  // how many lanes are beyond: a count of 64 at most, exact
 #pragma omp simd reduction(+ : beyond)
   for (std::uint32_t m = 0; m < n; ++m) {
+    f.small[m] = f.theta[m] < kSmallAngle2 ? 1.0 : 0.0;
     const double theta = std::sqrt(f.theta[m]);
     const double h = 0.5 * theta;
     double s, c;
@@ -53,9 +58,12 @@ TENDRIL_SIMD_CLONES void half_angles(FrameBlock& f, std::uint32_t n) {
 TENDRIL_SIMD_CLONES void frame_block(FrameBlock& f, std::uint32_t n) {
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
-    const double s = f.sin_half[m] / f.theta[m];
-    // a = rotation_of(r), b = the frame; Eigen's quat_product for doubles.
-    const double aw = f.cos_half[m], ax = s * f.rx[m], ay = s * f.ry[m], az = s * f.rz[m];
+    // a = rotation_of(r): below the small-angle bound (1, r / 2), which
+    // rotation_of normalizes by exactly 1; b = the frame; Eigen's
+    // quat_product for doubles.
+    const bool small = f.small[m] != 0;
+    const double s = small ? 0.5 : f.sin_half[m] / f.theta[m];
+    const double aw = small ? 1.0 : f.cos_half[m], ax = s * f.rx[m], ay = s * f.ry[m], az = s * f.rz[m];
     const double bx = f.qx[m], by = f.qy[m], bz = f.qz[m], bw = f.qw[m];
     const double x = (aw * bx + ay * bz) - (az * by - ax * bw);
     const double y = (aw * by + ay * bw) + (az * bx - ax * bz);
@@ -82,12 +90,7 @@ void drift_frames(const ParticleId* ids, std::uint32_t n, const std::uint8_t* ac
       const ParticleId p = ids[e];
       if (!active[p]) continue;
       const Vec3 r = dt * w[p];
-      const double theta2 = r.squaredNorm();
-      if (theta2 < 1e-24) {  // rotation_of's own branch
-        R[p] = Quat(rotation_of(r) * R[p]).normalized();
-        continue;
-      }
-      f.rx[k] = r.x(), f.ry[k] = r.y(), f.rz[k] = r.z(), f.theta[k] = theta2;
+      f.rx[k] = r.x(), f.ry[k] = r.y(), f.rz[k] = r.z(), f.theta[k] = r.squaredNorm();
       const Quat& q = R[p];
       f.qx[k] = q.x(), f.qy[k] = q.y(), f.qz[k] = q.z(), f.qw[k] = q.w();
       at[k++] = p;

@@ -100,6 +100,7 @@ TEST_CASE("frame drift blocks: drift_frames turns frames as rotation_of and norm
     const double scale = p % 17 == 3 ? 1e-14 : p % 23 == 5 ? 0.0 : p % 13 == 2 ? 4.0 : p % 5 == 1 ? 1.2 : 0.5;
     w[p] = scale * Vec3(u(rng), u(rng), u(rng));
     if (p % 29 == 11) w[p] = Vec3(std::nextafter(1.0, p % 3 - 1.0) / dt, 0, 0);  // |dt w| near 2 * 0.5
+    if (p % 31 == 9) w[p] = Vec3(1e-12 * (1 + (p % 7 - 3) * 1e-15) / dt, 0, 0);  // |dt w|^2 about kSmallAngle2
     R[p] = Quat(Eigen::AngleAxisd(3 * u(rng), Vec3(u(rng), u(rng), u(rng)).normalized()));
     active[p] = p % 11 != 7;
     expected[p] = active[p] ? Quat(Quat(rotation_of(dt * w[p]) * R[p]).normalized()) : R[p];
