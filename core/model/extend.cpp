@@ -1,6 +1,7 @@
 // Rule 9: a spline beam that grows particle by particle (thesis fig. 4.26),
 // the way an agent's children become a beam.
 #include "model/frames.hpp"
+#include "model/hinge_curvature.hpp"
 #include "model/model.hpp"
 
 namespace tendril {
@@ -62,7 +63,7 @@ void Model::extend_beam(BlockId b, ParticleId end, ParticleId p) {
     const Vec3 a = particles.position[end] - prev, c = particles.position[p] - particles.position[end];
     const double La = a.norm(), Lb = c.norm(), Lc = (particles.position[p] - prev).norm();
     const double nn = a.cross(c).norm();
-    if (nn > 0 && Lc > 0) kappa = 2 * (nn / (La * Lb)) / Lc;
+    if (nn > 0 && Lc > 0) kappa = hinge_curvature(nn, 1.0 / La, 1.0 / Lb, Lc);
   }
   rest_curvature[tip] = rest_curvature[d] = kappa;
   add_vertex_element(tip);

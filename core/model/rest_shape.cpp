@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "model/frames.hpp"
+#include "model/hinge_curvature.hpp"
 #include "model/model.hpp"
 
 namespace tendril {
@@ -68,8 +69,8 @@ void Model::set_rest_shape(BlockId b, RestShape r) {
       }
     }
     for (const Vertex& v : vertices) {
-      // Eq. 3.41's curvature with the very operations of hinge_forces, so
-      // the hinge's moment is exactly 0 in this shape.
+      // Eq. 3.41's curvature as hinge_forces measures it, so the hinge's
+      // moment is exactly 0 in this shape.
       const Vec3& xi = particles.position[dart_particle[map.alpha(0, v.out)]];
       const Vec3& xj = particles.position[dart_particle[v.out]];
       const Vec3& xk = particles.position[dart_particle[map.alpha(0, v.in)]];
@@ -80,7 +81,7 @@ void Model::set_rest_shape(BlockId b, RestShape r) {
       const Vec3 a = pj - pi, c = pk - pj;
       const double La = a.norm(), Lb = c.norm(), Lc = (pk - pi).norm();
       const double nn = a.cross(c).norm();
-      set_vertex_rest_curvature(v.out, nn > 0 && Lc > 0 ? 2 * (nn / (La * Lb)) / Lc : 0.0);
+      set_vertex_rest_curvature(v.out, nn > 0 && Lc > 0 ? hinge_curvature(nn, 1.0 / La, 1.0 / Lb, Lc) : 0.0);
     }
     blocks[b].rest = RestShape::Current;
     return;

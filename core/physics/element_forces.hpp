@@ -7,6 +7,7 @@
 
 #include "model/elements.hpp"
 #include "model/frames.hpp"
+#include "model/hinge_curvature.hpp"
 
 namespace tendril {
 
@@ -21,18 +22,21 @@ inline HingeForces hinge_forces(const Hinge& h, const Vec3* x) {
   HingeForces f;
   const Vec3 a = x[h.j] - x[h.i], b = x[h.k] - x[h.j];
   const double La = a.norm(), Lb = b.norm(), Lc = (x[h.k] - x[h.i]).norm();
-  f.ka = 4 * h.EI / (La * La * La);
-  f.kb = 4 * h.EI / (Lb * Lb * Lb);
+  const double inv_La = 1.0 / La, inv_Lb = 1.0 / Lb;
+  f.ka = 4 * h.EI * (inv_La * inv_La * inv_La);
+  f.kb = 4 * h.EI * (inv_Lb * inv_Lb * inv_Lb);
   const Vec3 nrm = a.cross(b);
   const double nn = nrm.norm();
   if (nn <= 0 || Lc <= 0) return f;  // straight (or degenerate): no bending force
-  const double sin_alpha = nn / (La * Lb);
-  // Moment EI*(kappa - kappa0) with kappa = 2 sin(alpha) / Lc (eq. 3.41).
-  const double M = h.EI * (2 * sin_alpha / Lc - h.rest_curvature);
+  // Moment EI*(kappa - kappa0) (eq. 3.41).
+  const double M = h.EI * (hinge_curvature(nn, inv_La, inv_Lb, Lc) - h.rest_curvature);
   // Shears M/La and M/Lb act normal to the links in the plane ijk
-  // (eq. 3.42), pushing the ends away from the centre of curvature.
-  f.fi = (M / La) * a.cross(nrm).normalized();
-  f.fk = (M / Lb) * b.cross(nrm).normalized();
+  // (eq. 3.42), pushing the ends away from the centre of curvature. a is
+  // normal to nrm, so |a x nrm| = La |nrm|: the unit directions without
+  // their norms.
+  const double inv_nn = 1.0 / nn;
+  f.fi = (M * (inv_La * inv_La * inv_nn)) * a.cross(nrm);
+  f.fk = (M * (inv_Lb * inv_Lb * inv_nn)) * b.cross(nrm);
   return f;
 }
 

@@ -69,9 +69,11 @@ TENDRIL_SIMD_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* _
 // Spline-beam hinges the same way (eq. 3.41-3.43): the three chords
 // gathered, one vectorised loop for lengths, stiffnesses and the two shear
 // forces, then the scatter in the model's order. Term for term the
-// arithmetic of hinge_forces (element_forces.hpp), Eigen's norm, cross and
-// normalized written out in their order; a straight or degenerate hinge
-// (no plane) gets +0 forces, as hinge_forces returns.
+// arithmetic of hinge_forces (element_forces.hpp), Eigen's norm and cross
+// written out in their order; a straight or degenerate hinge (no plane)
+// gets +0 forces, as hinge_forces returns. Four divisions a hinge (the
+// reciprocals of both links, of |a x b| and the curvature's), not twelve:
+// the loop waited on the divider (stop 38, docs/performance.md).
 constexpr std::uint32_t kHingeBlock = 64;
 
 struct HingeBlock {
@@ -93,25 +95,24 @@ TENDRIL_SIMD_CLONES void hinge_block(HingeBlock& h, const double* __restrict sti
     const double cx = h.cx[m], cy = h.cy[m], cz = h.cz[m], EI = stiffness[m];
     const double La = std::sqrt(ax * ax + ay * ay + az * az), Lb = std::sqrt(bx * bx + by * by + bz * bz),
                  Lc = std::sqrt(cx * cx + cy * cy + cz * cz);
-    const double ka = 4 * EI / (La * La * La), kb = 4 * EI / (Lb * Lb * Lb);
+    const double inv_La = 1.0 / La, inv_Lb = 1.0 / Lb;
+    const double ka = 4 * EI * (inv_La * inv_La * inv_La), kb = 4 * EI * (inv_Lb * inv_Lb * inv_Lb);
     h.k[m] = ka + kb;
     const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;  // a x b
     const double nn = std::sqrt(nx * nx + ny * ny + nz * nz);
     const bool bends = !(nn <= 0 || Lc <= 0);
-    const double sin_alpha = nn / (La * Lb);
-    const double M = EI * (2 * sin_alpha / Lc - curvature[m]);
-    // a x nrm and b x nrm, normalized (divided by their norm when it is > 0)
+    const double M = EI * (hinge_curvature(nn, inv_La, inv_Lb, Lc) - curvature[m]);
+    // a x nrm and b x nrm, of norms La |nrm| and Lb |nrm|
     const double ux = ay * nz - az * ny, uy = az * nx - ax * nz, uz = ax * ny - ay * nx;
     const double vx = by * nz - bz * ny, vy = bz * nx - bx * nz, vz = bx * ny - by * nx;
-    const double zu = ux * ux + uy * uy + uz * uz, zv = vx * vx + vy * vy + vz * vz;
-    const double ru = zu > 0 ? std::sqrt(zu) : 1.0, rv = zv > 0 ? std::sqrt(zv) : 1.0;
-    const double Ma = M / La, Mb = M / Lb;
-    h.fix[m] = bends ? Ma * (zu > 0 ? ux / ru : ux) : 0.0;
-    h.fiy[m] = bends ? Ma * (zu > 0 ? uy / ru : uy) : 0.0;
-    h.fiz[m] = bends ? Ma * (zu > 0 ? uz / ru : uz) : 0.0;
-    h.fkx[m] = bends ? Mb * (zv > 0 ? vx / rv : vx) : 0.0;
-    h.fky[m] = bends ? Mb * (zv > 0 ? vy / rv : vy) : 0.0;
-    h.fkz[m] = bends ? Mb * (zv > 0 ? vz / rv : vz) : 0.0;
+    const double inv_nn = 1.0 / nn;
+    const double Ma = M * (inv_La * inv_La * inv_nn), Mb = M * (inv_Lb * inv_Lb * inv_nn);
+    h.fix[m] = bends ? Ma * ux : 0.0;
+    h.fiy[m] = bends ? Ma * uy : 0.0;
+    h.fiz[m] = bends ? Ma * uz : 0.0;
+    h.fkx[m] = bends ? Mb * vx : 0.0;
+    h.fky[m] = bends ? Mb * vy : 0.0;
+    h.fkz[m] = bends ? Mb * vz : 0.0;
   }
 }
 

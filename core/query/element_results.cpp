@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "model/frames.hpp"
+#include "model/hinge_curvature.hpp"
 #include "physics/element_forces.hpp"
 
 namespace tendril {
@@ -93,8 +94,7 @@ BlockResults element_results(const Model& m, BlockId block, const StressSection*
     VertexResult v{h.j};
     const Vec3 a = x[h.j] - x[h.i], c = x[h.k] - x[h.j];
     const double Lc = (x[h.k] - x[h.i]).norm();
-    const double sin_alpha = a.cross(c).norm() / (a.norm() * c.norm());
-    v.curvature = Lc > 0 ? 2 * sin_alpha / Lc : 0;  // eq. 3.41
+    v.curvature = Lc > 0 ? hinge_curvature(a.cross(c).norm(), 1.0 / a.norm(), 1.0 / c.norm(), Lc) : 0;  // eq. 3.41
     v.moment = h.EI * (v.curvature - h.rest_curvature);
     v.radius = v.curvature > 0 ? 1 / v.curvature : std::numeric_limits<double>::infinity();
     out.vertices.push_back(v);

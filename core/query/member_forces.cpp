@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <map>
 
+#include "model/hinge_curvature.hpp"
+
 namespace tendril {
 
 MemberForces member_forces(const Model& m, BlockId block) {
@@ -32,8 +34,7 @@ MemberForces member_forces(const Model& m, BlockId block) {
     VertexMoment v{h.j};
     const Vec3 a = x[h.j] - x[h.i], c = x[h.k] - x[h.j];
     const double Lc = (x[h.k] - x[h.i]).norm();
-    const double sin_alpha = a.cross(c).norm() / (a.norm() * c.norm());
-    v.curvature = Lc > 0 ? 2 * sin_alpha / Lc : 0;
+    v.curvature = Lc > 0 ? hinge_curvature(a.cross(c).norm(), 1.0 / a.norm(), 1.0 / c.norm(), Lc) : 0;
     v.moment = h.EI * (v.curvature - h.rest_curvature);
     out.vertices.push_back(v);
   }
