@@ -9,7 +9,9 @@
 
 #include "benchmark_models.hpp"
 #include "model/model.hpp"
+#include "physics/element_forces.hpp"
 #include "physics/solver.hpp"
+#include "query/member_forces.hpp"
 
 using namespace tendril;
 
@@ -70,6 +72,27 @@ TEST_CASE("rest shape: an arc built with rest = current stays put; straight at r
     for (int k = 0; k < 200; ++k) solver.step();
     CHECK(arc.largest_move(start) > 1e-3 * Arc::R);
   }
+}
+
+TEST_CASE("rest shape: a 3-DOF arc built with rest = current has exactly no moment, as forces and reports measure it") {
+  // The rest curvature, the hinge's force and the member report all measure
+  // eq. 3.41 with model/hinge_curvature.hpp on the same positions, so their
+  // difference is exactly 0, not a rounding error.
+  Arc arc(32, 3);
+  arc.m.set_rest_shape(arc.beam, RestShape::Current);
+  const Vec3* x = arc.m.particles.position.raw().data();
+  int hinges = 0;
+  for (const Hinge& h : arc.m.hinges.items) {
+    CHECK(h.rest_curvature == doctest::Approx(1 / Arc::R).epsilon(1e-3));
+    const HingeForces f = hinge_forces(h, x);
+    CHECK(f.fi == Vec3::Zero());
+    CHECK(f.fk == Vec3::Zero());
+    ++hinges;
+  }
+  CHECK(hinges == 31);
+  const MemberForces report = member_forces(arc.m, arc.beam);
+  CHECK(report.vertices.size() == 31);
+  for (const VertexMoment& v : report.vertices) CHECK(v.moment == 0.0);
 }
 
 TEST_CASE("rest shape: a curved rest shape survives switching 3 -> 6 -> 3 DOF") {
