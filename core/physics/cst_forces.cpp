@@ -40,6 +40,7 @@
 // 1e-10 times its longest side squared) has no plane and no normal: it
 // exerts no force and adds only its elastic stiffness.
 #include <algorithm>
+#include <type_traits>
 #include <vector>
 
 #include "physics/cst_plan.hpp"
@@ -124,7 +125,7 @@ TENDRIL_SIMD_CLONES void cst_block(CstBlock& t, std::uint32_t n, double gf) {
       tau = analysis ? G * gamma : 0.0;
     }
     // 1/2 sigma m for the side opposite a corner: out = side x e3.
-    auto pull = [&](double px, double py, double pz, double& fx, double& fy, double& fz) {
+    auto pull = [&](double px, double py, double pz, double& fx, double& fy, double& fz) TENDRIL_INLINE {
       const double ox = py * e3z - pz * e3y, oy = pz * e3x - px * e3z, oz = px * e3y - py * e3x;
       const double u = ox * e1x + oy * e1y + oz * e1z, v = ox * e2x + oy * e2y + oz * e2z;
       const double A = sx * u + tau * v, B = tau * u + sy * v;
@@ -144,6 +145,11 @@ TENDRIL_SIMD_CLONES void cst_block(CstBlock& t, std::uint32_t n, double gf) {
     t.sk[m] = e2 + g * aa;
   }
 }
+
+// a += b and a -= b, component by component as Eigen adds: Eigen's
+// operators, inlined many times in the loop below, stop being inlined.
+TENDRIL_INLINE inline void add_into(Vec3& a, const Vec3& b) { a.x() += b.x(), a.y() += b.y(), a.z() += b.z(); }
+TENDRIL_INLINE inline void subtract_from(Vec3& a, const Vec3& b) { a.x() -= b.x(), a.y() -= b.y(), a.z() -= b.z(); }
 
 // One thread's (or chunk's) triangles: items[0 .. count) (kShared) or
 // 0 .. count, in the model's order, their forces and G-strings added into
@@ -183,48 +189,56 @@ TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const 
     for (std::uint32_t m = 0; m < n; ++m) {
       const std::uint32_t e = kShared ? items[e0 + m] : e0 + m;
       const ParticleId i = ti[e], j = tj[e], k = tk[e];
-      const bool own_i = own(i), own_j = own(j), own_k = own(k);
-      const std::uint8_t along_normal = plan.along_normal[e];
       const std::uint32_t* slot = plan.slot.data() + 3 * e;
-      if (along_normal) {  // the G-strings: side 1 (i -> j) warp, side 2 (j -> k) weft
-        auto g_string = [&](ParticleId u, int cu, bool own_u, ParticleId v, int cv, bool own_v, const Vec3& uv,
-                            double q) TENDRIL_INLINE {
-          if ((along_normal >> cu & 1) && own_u) {
-            sums[slot[cu]].smooth += q * uv;
-            out.stiffness(u, q);
-          }
-          if ((along_normal >> cv & 1) && own_v) {
-            sums[slot[cv]].smooth -= q * uv;
-            out.stiffness(v, q);
-          }
-        };
-        const double q = plan.g_string[e];
-        g_string(i, 0, own_i, j, 1, own_j, Vec3(tb.ax[m], tb.ay[m], tb.az[m]), q);
-        g_string(j, 1, own_j, k, 2, own_k, Vec3(tb.cx[m], tb.cy[m], tb.cz[m]), q);
-      }
-      if (tb.flat[m] != 0) {  // no plane: no force, the elastic stiffness only
-        if (own_i) out.stiffness(i, tb.ei[m]);
-        if (own_j) out.stiffness(j, tb.ej[m]);
-        if (own_k) out.stiffness(k, tb.ek[m]);
-        continue;
-      }
-      const Vec3 nrm(tb.nx[m], tb.ny[m], tb.nz[m]);
-      // A corner's force and stiffness go to different lanes of a sum, so
-      // adding them at once (one 4-lane addition in a chunk's sums) adds to
-      // each lane what the force's and then the stiffness's addition add.
-      auto add = [&](ParticleId p, int corner, const Vec3& f, double stiffness) TENDRIL_INLINE {
-        if (!(along_normal >> corner & 1)) {
-          out.force_stiffness(p, f, stiffness);
+      // The common triangle (every corner owned and projected, a plane)
+      // takes a copy of the loop's body without the tests it passes.
+      auto scatter = [&](auto common) TENDRIL_INLINE {
+        const bool own_i = common || own(i), own_j = common || own(j), own_k = common || own(k);
+        const std::uint8_t along_normal = common ? 7 : plan.along_normal[e];
+        if (along_normal) {  // the G-strings: side 1 (i -> j) warp, side 2 (j -> k) weft
+          auto g_string = [&](ParticleId u, int cu, bool own_u, ParticleId v, int cv, bool own_v, const Vec3& uv,
+                              double q) TENDRIL_INLINE {
+            if ((along_normal >> cu & 1) && own_u) {
+              add_into(sums[slot[cu]].smooth, Vec3(q * uv.x(), q * uv.y(), q * uv.z()));
+              out.stiffness(u, q);
+            }
+            if ((along_normal >> cv & 1) && own_v) {
+              subtract_from(sums[slot[cv]].smooth, Vec3(q * uv.x(), q * uv.y(), q * uv.z()));
+              out.stiffness(v, q);
+            }
+          };
+          const double q = plan.g_string[e];
+          g_string(i, 0, own_i, j, 1, own_j, Vec3(tb.ax[m], tb.ay[m], tb.az[m]), q);
+          g_string(j, 1, own_j, k, 2, own_k, Vec3(tb.cx[m], tb.cy[m], tb.cz[m]), q);
+        }
+        if (!common && tb.flat[m] != 0) {  // no plane: no force, the elastic stiffness only
+          if (own_i) out.stiffness(i, tb.ei[m]);
+          if (own_j) out.stiffness(j, tb.ej[m]);
+          if (own_k) out.stiffness(k, tb.ek[m]);
           return;
         }
-        CstCornerSums& c = sums[slot[corner]];
-        c.pull += f;  // projected below, once all its triangles are in
-        c.normal += c.normal.dot(nrm) < 0 ? Vec3(-nrm) : nrm;
-        out.stiffness(p, stiffness);
+        const Vec3 nrm(tb.nx[m], tb.ny[m], tb.nz[m]);
+        // A corner's force and stiffness go to different lanes of a sum, so
+        // adding them at once (one 4-lane addition in a chunk's sums) adds to
+        // each lane what the force's and then the stiffness's addition add.
+        auto add = [&](ParticleId p, int corner, const Vec3& f, double stiffness) TENDRIL_INLINE {
+          if (!(along_normal >> corner & 1)) {
+            out.force_stiffness(p, f, stiffness);
+            return;
+          }
+          CstCornerSums& c = sums[slot[corner]];
+          add_into(c.pull, f);  // projected below, once all its triangles are in
+          add_into(c.normal, c.normal.dot(nrm) < 0 ? Vec3(-nrm.x(), -nrm.y(), -nrm.z()) : nrm);
+          out.stiffness(p, stiffness);
+        };
+        if (own_i) add(i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]), tb.si[m]);
+        if (own_j) add(j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]), tb.sj[m]);
+        if (own_k) add(k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]), tb.sk[m]);
       };
-      if (own_i) add(i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]), tb.si[m]);
-      if (own_j) add(j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]), tb.sj[m]);
-      if (own_k) add(k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]), tb.sk[m]);
+      if (plan.along_normal[e] == 7 && tb.flat[m] == 0 && own(i) && own(j) && own(k)) [[likely]]
+        scatter(std::true_type{});
+      else
+        scatter(std::false_type{});
     }
   }
 }
