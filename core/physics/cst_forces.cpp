@@ -194,7 +194,7 @@ TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const 
       // takes a copy of the loop's body without the tests it passes.
       auto scatter = [&](auto common) TENDRIL_INLINE {
         const bool own_i = common || own(i), own_j = common || own(j), own_k = common || own(k);
-        const std::uint8_t along_normal = common ? 7 : plan.along_normal[e];
+        const std::uint8_t along_normal = common ? CstPlan::kAllCorners : plan.along_normal[e];
         if (along_normal) {  // the G-strings: side 1 (i -> j) warp, side 2 (j -> k) weft
           auto g_string = [&](ParticleId u, int cu, bool own_u, ParticleId v, int cv, bool own_v, const Vec3& uv,
                               double q) TENDRIL_INLINE {
@@ -235,7 +235,7 @@ TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const 
         if (own_j) add(j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]), tb.sj[m]);
         if (own_k) add(k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]), tb.sk[m]);
       };
-      if (plan.along_normal[e] == 7 && tb.flat[m] == 0 && own(i) && own(j) && own(k)) [[likely]]
+      if (plan.along_normal[e] == CstPlan::kAllCorners && tb.flat[m] == 0 && own(i) && own(j) && own(k)) [[likely]]
         scatter(std::true_type{});
       else
         scatter(std::false_type{});

@@ -34,6 +34,7 @@ struct CstPlan {
   // Bit c: corner c (i, j, k) takes only its pull along its normal and
   // follows the G-strings (an interior vertex in form-finding).
   std::vector<std::uint8_t> along_normal;
+  static constexpr std::uint8_t kAllCorners = 7;  // along_normal of a triangle with every corner interior
   std::vector<std::uint32_t> slot;  // 3 per triangle: its corners' slots, kNoSlot where none
   std::vector<std::uint8_t> analysis;  // 1: in analysis (eq. 3.37-3.39), else form-finding
   // Per slot: the corner, and whether more than one triangle projects it.
