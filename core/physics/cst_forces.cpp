@@ -40,7 +40,6 @@
 // 1e-10 times its longest side squared) has no plane and no normal: it
 // exerts no force and adds only its elastic stiffness.
 #include <algorithm>
-#include <type_traits>
 #include <vector>
 
 #include "physics/cst_plan.hpp"
@@ -190,55 +189,73 @@ TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const 
       const std::uint32_t e = kShared ? items[e0 + m] : e0 + m;
       const ParticleId i = ti[e], j = tj[e], k = tk[e];
       const std::uint32_t* slot = plan.slot.data() + 3 * e;
-      // The common triangle (every corner owned and projected, a plane)
-      // takes a copy of the loop's body without the tests it passes.
-      auto scatter = [&](auto common) TENDRIL_INLINE {
-        const bool own_i = common || own(i), own_j = common || own(j), own_k = common || own(k);
-        const std::uint8_t along_normal = common ? CstPlan::kAllCorners : plan.along_normal[e];
-        if (along_normal) {  // the G-strings: side 1 (i -> j) warp, side 2 (j -> k) weft
-          auto g_string = [&](ParticleId u, int cu, bool own_u, ParticleId v, int cv, bool own_v, const Vec3& uv,
-                              double q) TENDRIL_INLINE {
-            if ((along_normal >> cu & 1) && own_u) {
-              add_into(sums[slot[cu]].smooth, Vec3(q * uv.x(), q * uv.y(), q * uv.z()));
-              out.stiffness(u, q);
-            }
-            if ((along_normal >> cv & 1) && own_v) {
-              subtract_from(sums[slot[cv]].smooth, Vec3(q * uv.x(), q * uv.y(), q * uv.z()));
-              out.stiffness(v, q);
-            }
-          };
-          const double q = plan.g_string[e];
-          g_string(i, 0, own_i, j, 1, own_j, Vec3(tb.ax[m], tb.ay[m], tb.az[m]), q);
-          g_string(j, 1, own_j, k, 2, own_k, Vec3(tb.cx[m], tb.cy[m], tb.cz[m]), q);
-        }
-        if (!common && tb.flat[m] != 0) {  // no plane: no force, the elastic stiffness only
-          if (own_i) out.stiffness(i, tb.ei[m]);
-          if (own_j) out.stiffness(j, tb.ej[m]);
-          if (own_k) out.stiffness(k, tb.ek[m]);
+      const Vec3 nrm(tb.nx[m], tb.ny[m], tb.nz[m]);
+      // A projected corner: its pull, and the normal oriented to its sum so
+      // far (projected in project_corners, once all its triangles are in).
+      auto pull_into = [&](CstCornerSums& c, const Vec3& f) TENDRIL_INLINE {
+        add_into(c.pull, f);
+        add_into(c.normal, c.normal.dot(nrm) < 0 ? Vec3(-nrm.x(), -nrm.y(), -nrm.z()) : nrm);
+      };
+      if (plan.along_normal[e] == CstPlan::kAllCorners && tb.flat[m] == 0 && own(i) && own(j) && own(k)) [[likely]] {
+        // The common triangle (every corner owned and projected, a plane):
+        // the general path's additions below, each sum's in its order, but
+        // grouped by sum: j's G-strings (it ends side 1 and starts side 2)
+        // and a corner's stiffnesses (its strings', then its pull's) take
+        // one load and one store each, not a store and a load of the same
+        // sum back to back.
+        const double q = plan.g_string[e];
+        const Vec3 qa(q * tb.ax[m], q * tb.ay[m], q * tb.az[m]), qc(q * tb.cx[m], q * tb.cy[m], q * tb.cz[m]);
+        CstCornerSums &ci = sums[slot[0]], &cj = sums[slot[1]], &ck = sums[slot[2]];
+        add_into(ci.smooth, qa);
+        cj.smooth = Vec3((cj.smooth.x() - qa.x()) + qc.x(), (cj.smooth.y() - qa.y()) + qc.y(),
+                         (cj.smooth.z() - qa.z()) + qc.z());
+        subtract_from(ck.smooth, qc);
+        pull_into(ci, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]));
+        out.stiffness(i, q, tb.si[m]);
+        pull_into(cj, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]));
+        out.stiffness(j, q, q, tb.sj[m]);
+        pull_into(ck, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]));
+        out.stiffness(k, q, tb.sk[m]);
+        continue;
+      }
+      const bool own_i = own(i), own_j = own(j), own_k = own(k);
+      const std::uint8_t along_normal = plan.along_normal[e];
+      if (along_normal) {  // the G-strings: side 1 (i -> j) warp, side 2 (j -> k) weft
+        auto g_string = [&](ParticleId u, int cu, bool own_u, ParticleId v, int cv, bool own_v, const Vec3& uv,
+                            double q) TENDRIL_INLINE {
+          if ((along_normal >> cu & 1) && own_u) {
+            add_into(sums[slot[cu]].smooth, Vec3(q * uv.x(), q * uv.y(), q * uv.z()));
+            out.stiffness(u, q);
+          }
+          if ((along_normal >> cv & 1) && own_v) {
+            subtract_from(sums[slot[cv]].smooth, Vec3(q * uv.x(), q * uv.y(), q * uv.z()));
+            out.stiffness(v, q);
+          }
+        };
+        const double q = plan.g_string[e];
+        g_string(i, 0, own_i, j, 1, own_j, Vec3(tb.ax[m], tb.ay[m], tb.az[m]), q);
+        g_string(j, 1, own_j, k, 2, own_k, Vec3(tb.cx[m], tb.cy[m], tb.cz[m]), q);
+      }
+      if (tb.flat[m] != 0) {  // no plane: no force, the elastic stiffness only
+        if (own_i) out.stiffness(i, tb.ei[m]);
+        if (own_j) out.stiffness(j, tb.ej[m]);
+        if (own_k) out.stiffness(k, tb.ek[m]);
+        continue;
+      }
+      // A corner's force and stiffness go to different lanes of a sum, so
+      // adding them at once (one 4-lane addition in a chunk's sums) adds to
+      // each lane what the force's and then the stiffness's addition add.
+      auto add = [&](ParticleId p, int corner, const Vec3& f, double stiffness) TENDRIL_INLINE {
+        if (!(along_normal >> corner & 1)) {
+          out.force_stiffness(p, f, stiffness);
           return;
         }
-        const Vec3 nrm(tb.nx[m], tb.ny[m], tb.nz[m]);
-        // A corner's force and stiffness go to different lanes of a sum, so
-        // adding them at once (one 4-lane addition in a chunk's sums) adds to
-        // each lane what the force's and then the stiffness's addition add.
-        auto add = [&](ParticleId p, int corner, const Vec3& f, double stiffness) TENDRIL_INLINE {
-          if (!(along_normal >> corner & 1)) {
-            out.force_stiffness(p, f, stiffness);
-            return;
-          }
-          CstCornerSums& c = sums[slot[corner]];
-          add_into(c.pull, f);  // projected below, once all its triangles are in
-          add_into(c.normal, c.normal.dot(nrm) < 0 ? Vec3(-nrm.x(), -nrm.y(), -nrm.z()) : nrm);
-          out.stiffness(p, stiffness);
-        };
-        if (own_i) add(i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]), tb.si[m]);
-        if (own_j) add(j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]), tb.sj[m]);
-        if (own_k) add(k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]), tb.sk[m]);
+        pull_into(sums[slot[corner]], f);
+        out.stiffness(p, stiffness);
       };
-      if (plan.along_normal[e] == CstPlan::kAllCorners && tb.flat[m] == 0 && own(i) && own(j) && own(k)) [[likely]]
-        scatter(std::true_type{});
-      else
-        scatter(std::false_type{});
+      if (own_i) add(i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]), tb.si[m]);
+      if (own_j) add(j, 1, Vec3(tb.fjx[m], tb.fjy[m], tb.fjz[m]), tb.sj[m]);
+      if (own_k) add(k, 2, Vec3(tb.fkx[m], tb.fky[m], tb.fkz[m]), tb.sk[m]);
     }
   }
 }

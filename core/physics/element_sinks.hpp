@@ -15,7 +15,11 @@ struct ModelSink {
   Vec3* T = nullptr;
   double* K = nullptr;
   void force(ParticleId p, const Vec3& f) const { F[p] += f; }
-  void stiffness(ParticleId p, double s) const { S[p] += s; }
+  // S[p] += s, then += each of `more`, in order: one load and one store.
+  template <class... More>
+  void stiffness(ParticleId p, double s, More... more) const {
+    S[p] = ((S[p] + s) + ... + more);
+  }
   void torque(ParticleId p, const Vec3& t) const { T[p] += t; }
   void rot_stiffness(ParticleId p, double k) const { K[p] += k; }
   // A force and a stiffness (a torque and a rotational stiffness) at once.
@@ -32,7 +36,11 @@ struct ChunkSink {
   // + 0 to the force lanes, which turns a -0 into +0: it is added alone.)
   static void add(ForceSum& v, const Vec3& f) { v += ForceSum{f.x(), f.y(), f.z(), 0.0}; }
   void force(ParticleId p, const Vec3& f) const { add(sums[p - base], f); }
-  void stiffness(ParticleId p, double s) const { sums[p - base][3] += s; }
+  template <class... More>
+  void stiffness(ParticleId p, double s, More... more) const {
+    double& v = sums[p - base][3];
+    v = ((v + s) + ... + more);
+  }
   void torque(ParticleId p, const Vec3& t) const { add(turns[p - base], t); }
   void rot_stiffness(ParticleId p, double k) const { turns[p - base][3] += k; }
   // One addition per lane, as the two calls make: one 4-vector.
