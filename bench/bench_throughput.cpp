@@ -344,19 +344,25 @@ int main(int argc, char** argv) {
       return 0;
     }
   }
-  std::puts("\none thread, thread CPU time:");
+  // Each case against one thread's triad too: the bytes its step moves (as
+  // above) and the bandwidth that makes at the measured speed.
+  const double triad_1 = triad_gbs(1);
+  std::printf("\none thread, thread CPU time; B/p-it = Solver::fused_step_bytes() / particles, GB/s = B/p-it x\n"
+              "p-it/s, of triad = that over one thread's triad (%.1f GB/s, this run)\n", triad_1);
 
   Table table({"case", "particles", "bars", "hinges", "build s", "steps", "cpu s", "M p-it/s", "ns/p-step",
-               "RSS MB", "B/particle"});
+               "B/p-it", "GB/s", "of triad", "RSS MB", "B/particle"});
   double bar_net_largest = -1;
   std::size_t bar_net_largest_n = 0;
   for (const Case& c : cases)
     for (std::size_t n : sizes) {
       Measurement r = measure(c, n, target_seconds);
       const double pit = double(r.particles) * double(r.steps) / r.seconds;
+      const double bytes = r.step_bytes / double(r.particles);
       table.add({c.name, fmt("%zu", r.particles), fmt("%zu", r.bars), fmt("%zu", r.hinges), fmt("%.2f", r.build_s),
                  fmt("%llu", (unsigned long long)r.steps), fmt("%.2f", r.seconds), fmt("%.1f", pit / 1e6),
-                 fmt("%.1f", 1e9 / pit), fmt("%.1f", r.rss_growth / 1048576.0),
+                 fmt("%.1f", 1e9 / pit), fmt("%.0f", bytes), fmt("%.1f", bytes * pit / 1e9),
+                 fmt("%.0f %%", 100 * bytes * pit / 1e9 / triad_1), fmt("%.1f", r.rss_growth / 1048576.0),
                  fmt("%.0f", double(r.rss_growth) / double(r.particles))});
       if (c.build == build_bar_net && r.particles >= bar_net_largest_n) {
         bar_net_largest_n = r.particles;
