@@ -38,8 +38,8 @@ struct ChunkSink {
   void force(ParticleId p, const Vec3& f) const { add(sums[p - base], f); }
   template <class... More>
   void stiffness(ParticleId p, double s, More... more) const {
-    double& v = sums[p - base][3];
-    v = ((v + s) + ... + more);
+    ForceSum& v = sums[p - base];  // (a reference to one lane is GCC's only)
+    v[3] = ((v[3] + s) + ... + more);
   }
   void torque(ParticleId p, const Vec3& t) const { add(turns[p - base], t); }
   void rot_stiffness(ParticleId p, double k) const { turns[p - base][3] += k; }

@@ -274,8 +274,7 @@ void beam6_forces(const Beam6Plan& plan, const Beam6* beams, std::uint32_t first
     // The plan's columns two blocks ahead, which beam6_block reads in place:
     // the hardware's own prefetching falls behind on sixteen streams at
     // once (the 100K 6-DOF grid waited on them). Written here, not in a
-    // function: GCC takes a function of prefetches alone for one without
-    // effects and drops its calls.
+    // function of their own: GCC compiled such a function to a bare return.
     const std::size_t entries = plan.L.size();
     if (const std::uint32_t ahead = e0 + kBeam6Prefetch;
         entries >= kBeam6PrefetchFrom && std::size_t(ahead) + kBeam6Block <= entries) {
