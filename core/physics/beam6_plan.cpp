@@ -1,5 +1,7 @@
 #include "physics/beam6_plan.hpp"
 
+#include <cstring>
+
 #include "physics/element_forces.hpp"
 
 namespace tendril {
@@ -31,6 +33,7 @@ void Beam6Plan::derive(const Model& m) {
     cz[e] = 2 * b.EIz / l, cy[e] = 2 * b.EIy / l;
     torsion[e] = b.GJ / l;
   }
+  find_runs();
   model_ = &m;
   revision_ = m.revision;
   capacity_ = m.particles.capacity();
@@ -43,9 +46,30 @@ void Beam6Plan::derive(const Beam6Plan& from, const std::vector<std::uint32_t>& 
     out.resize(items.size());
     for (std::size_t e = 0; e < items.size(); ++e) out[e] = in[items[e]];
   });
+  find_runs();
   model_ = from.model_;
   revision_ = from.revision_;
   capacity_ = from.capacity_;
+}
+
+void Beam6Plan::find_runs() {
+  const std::size_t n = i.size();
+  same_constants_to.resize(n);
+  same_ends_to.resize(n);
+  // Bit for bit (memcmp): a -0 is not a +0, and a NaN equals its own bits.
+  const auto same = [](const std::vector<double>* const* columns, std::size_t count, std::size_t a) {
+    for (std::size_t c = 0; c < count; ++c)
+      if (std::memcmp(&(*columns[c])[a], &(*columns[c])[a + 1], sizeof(double)) != 0) return false;
+    return true;
+  };
+  const std::vector<double>* constants[] = {&L, &EA, &prestress, &k_static, &kr, &cz, &cy, &torsion};
+  const std::vector<double>* ends[] = {&end_i[0], &end_i[1], &end_i[2], &end_i[3],
+                                       &end_j[0], &end_j[1], &end_j[2], &end_j[3]};
+  for (std::size_t e = n; e-- > 0;) {
+    const bool last = e + 1 == n;
+    same_constants_to[e] = !last && same(constants, 8, e) ? same_constants_to[e + 1] : std::uint32_t(e + 1);
+    same_ends_to[e] = !last && same(ends, 8, e) ? same_ends_to[e + 1] : std::uint32_t(e + 1);
+  }
 }
 
 }  // namespace tendril

@@ -7,6 +7,10 @@
 // is evaluated in (the fused step's chunks, the threads of the element
 // pass: ElementShares::items), so that the element loop reads its
 // constants in place instead of copying them element by element.
+// The elements of a member usually share their section and length, and
+// often their beam-end frames: runs of entries with the same constants, or
+// the same ends, are marked, so that a block of the step inside such a run
+// reads one entry's instead of streaming a column each.
 // Derived again whenever the model's revision or capacity moved.
 #include <cstdint>
 #include <vector>
@@ -34,11 +38,17 @@ struct Beam6Plan {
   std::vector<double> kr;        // max(GJ / L, 7/4 4 EI / L), eq. 3.49
   std::vector<double> cz, cy;    // 2 EIz / L, 2 EIy / L (eq. 3.46)
   std::vector<double> torsion;   // GJ / L
+  // The end of the run from entry e on whose entries hold e's constants
+  // (L .. torsion) or e's ends (end_i, end_j), bit for bit: entries e ..
+  // same_constants_to[e] - 1 read alike.
+  std::vector<std::uint32_t> same_constants_to, same_ends_to;
 
  private:
-  // each(out's column, in's column) for every per-entry column but elements.
+  // each(out's column, in's column) for every per-entry column but elements
+  // and the runs (find_runs derives them).
   template <class Each>
   static void columns(Beam6Plan& out, const Beam6Plan& in, Each each);
+  void find_runs();
   const Model* model_ = nullptr;
   std::uint64_t revision_ = ~std::uint64_t(0);
   std::size_t capacity_ = 0;

@@ -162,6 +162,7 @@ inline TENDRIL_INLINE void frame_matrix(double ax, double ay, double az, double 
   E[2][0] = txz - twy, E[2][1] = tyz + twx, E[2][2] = 1.0 - (txx + tyy);
 }
 
+template <bool kSameConstants, bool kSameEnds>
 TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, const Beam6Plan& plan, std::uint32_t first, std::uint32_t n,
                                      double gf) {
   const double *__restrict eix = plan.end_i[0].data() + first, *__restrict eiy = plan.end_i[1].data() + first,
@@ -175,16 +176,19 @@ TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, const Beam6Plan& plan, std::
                            *__restrict torsion = plan.torsion.data() + first;
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
-    const double L = rest[m], EA = axial[m];
+    // The entry whose constants and ends are read: the block's first when
+    // the block lies in a run of the same ones.
+    const std::uint32_t c = kSameConstants ? 0 : m, o = kSameEnds ? 0 : m;
+    const double L = rest[c], EA = axial[c];
     const double dx = b.dx[m], dy = b.dy[m], dz = b.dz[m];
     const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const double N = pre[m] + EA * (l - L) / L;  // eq. 3.32 with K = EA / L
-    b.k[m] = k_static[m] + (l > 0 && N > 0 ? gf * N / l : 0.0);  // eq. 3.47
-    b.kr[m] = kr[m];                                             // eq. 3.49
+    const double N = pre[c] + EA * (l - L) / L;  // eq. 3.32 with K = EA / L
+    b.k[m] = k_static[c] + (l > 0 && N > 0 ? gf * N / l : 0.0);  // eq. 3.47
+    b.kr[m] = kr[c];                                             // eq. 3.49
     // Ea, Eb: the rotation matrices of q[i] * end_i and q[j] * end_j.
     double Ea[3][3], Eb[3][3];
-    frame_matrix(b.qix[m], b.qiy[m], b.qiz[m], b.qiw[m], eix[m], eiy[m], eiz[m], eiw[m], Ea);
-    frame_matrix(b.qjx[m], b.qjy[m], b.qjz[m], b.qjw[m], ejx[m], ejy[m], ejz[m], ejw[m], Eb);
+    frame_matrix(b.qix[m], b.qiy[m], b.qiz[m], b.qiw[m], eix[o], eiy[o], eiz[o], eiw[o], Ea);
+    frame_matrix(b.qjx[m], b.qjy[m], b.qjz[m], b.qjw[m], ejx[o], ejy[o], ejz[o], ejw[o], Eb);
     const double ux0 = dx / l, ux1 = dy / l, ux2 = dz / l;  // eq. 3.45
     // element_frame: y = (Ea z + Eb z) x ux, normalized; z = ux x y.
     const double s0 = Ea[0][2] + Eb[0][2], s1 = Ea[1][2] + Eb[1][2], s2 = Ea[2][2] + Eb[2][2];
@@ -201,10 +205,10 @@ TENDRIL_SIMD_CLONES void beam6_block(Beam6Block& b, const Beam6Plan& plan, std::
     const double twist = 0.5 * ((Eb[0][1] * Ea[0][2] + Eb[1][1] * Ea[1][2] + Eb[2][1] * Ea[2][2]) -
                                 (Ea[0][1] * Eb[0][2] + Ea[1][1] * Eb[1][2] + Ea[2][1] * Eb[2][2]));
     // Eq. 3.46.
-    const double cz = c_z[m], cy = c_y[m];
+    const double cz = c_z[c], cy = c_y[c];
     const double Mza = cz * (2 * za + zb), Mzb = cz * (za + 2 * zb);
     const double Mya = cy * (2 * ya + yb), Myb = cy * (ya + 2 * yb);
-    const double Mx = torsion[m] * twist;
+    const double Mx = torsion[c] * twist;
     const double ta0 = Mx * ux0 - Mya * uy0 - Mza * uz0, ta1 = Mx * ux1 - Mya * uy1 - Mza * uz1,
                  ta2 = Mx * ux2 - Mya * uy2 - Mza * uz2;
     const double tb0 = -Mx * ux0 - Myb * uy0 - Mzb * uz0, tb1 = -Mx * ux1 - Myb * uy1 - Mzb * uz1,
@@ -271,23 +275,36 @@ void beam6_forces(const Beam6Plan& plan, const Beam6* beams, std::uint32_t first
       bb.qix[m] = qi.x(), bb.qiy[m] = qi.y(), bb.qiz[m] = qi.z(), bb.qiw[m] = qi.w();
       bb.qjx[m] = qj.x(), bb.qjy[m] = qj.y(), bb.qjz[m] = qj.z(), bb.qjw[m] = qj.w();
     }
-    // The plan's columns two blocks ahead, which beam6_block reads in place:
-    // the hardware's own prefetching falls behind on sixteen streams at
-    // once (the 100K 6-DOF grid waited on them). Written here, not in a
+    // A block inside a run of the same constants, or of the same ends, reads
+    // them once (Beam6Plan::same_*_to): a member's elements share them.
+    const bool same_constants = plan.same_constants_to[e0] >= e0 + n, same_ends = plan.same_ends_to[e0] >= e0 + n;
+    // The plan's columns two blocks ahead that beam6_block will read in
+    // place: the hardware's own prefetching falls behind on sixteen streams
+    // at once (the 100K 6-DOF grid waited on them). Written here, not in a
     // function of their own: GCC compiled such a function to a bare return.
     const std::size_t entries = plan.L.size();
     if (const std::uint32_t ahead = e0 + kBeam6Prefetch;
         entries >= kBeam6PrefetchFrom && std::size_t(ahead) + kBeam6Block <= entries) {
-      const double* columns[] = {plan.end_i[0].data(), plan.end_i[1].data(), plan.end_i[2].data(),
-                                 plan.end_i[3].data(), plan.end_j[0].data(), plan.end_j[1].data(),
-                                 plan.end_j[2].data(), plan.end_j[3].data(), plan.L.data(),
-                                 plan.EA.data(),       plan.prestress.data(), plan.k_static.data(),
-                                 plan.kr.data(),       plan.cz.data(),       plan.cy.data(),
-                                 plan.torsion.data()};
-      for (const double* column : columns)
-        for (std::uint32_t m = 0; m < kBeam6Block; m += 8) __builtin_prefetch(column + ahead + m, 0, 2);  // 8 a line
+      const std::uint32_t last = ahead + kBeam6Block;
+      const double* ends[] = {plan.end_i[0].data(), plan.end_i[1].data(), plan.end_i[2].data(),
+                              plan.end_i[3].data(), plan.end_j[0].data(), plan.end_j[1].data(),
+                              plan.end_j[2].data(), plan.end_j[3].data()};
+      const double* constants[] = {plan.L.data(),  plan.EA.data(), plan.prestress.data(), plan.k_static.data(),
+                                   plan.kr.data(), plan.cz.data(), plan.cy.data(),        plan.torsion.data()};
+      if (plan.same_ends_to[ahead] < last)
+        for (const double* column : ends)
+          for (std::uint32_t m = 0; m < kBeam6Block; m += 8) __builtin_prefetch(column + ahead + m, 0, 2);  // 8 a line
+      if (plan.same_constants_to[ahead] < last)
+        for (const double* column : constants)
+          for (std::uint32_t m = 0; m < kBeam6Block; m += 8) __builtin_prefetch(column + ahead + m, 0, 2);
     }
-    beam6_block(bb, plan, e0, n, gf);
+    if (same_constants) {
+      if (same_ends) beam6_block<true, true>(bb, plan, e0, n, gf);
+      else beam6_block<true, false>(bb, plan, e0, n, gf);
+    } else {
+      if (same_ends) beam6_block<false, true>(bb, plan, e0, n, gf);
+      else beam6_block<false, false>(bb, plan, e0, n, gf);
+    }
     for (std::uint32_t m = 0; m < n; ++m) {
       const ParticleId i = pi[e0 + m], j = pj[e0 + m];
       Beam6Ends r;
