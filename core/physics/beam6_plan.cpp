@@ -1,5 +1,6 @@
 #include "physics/beam6_plan.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include "physics/element_forces.hpp"
@@ -70,6 +71,15 @@ void Beam6Plan::find_runs() {
     same_constants_to[e] = !last && same(constants, 8, e) ? same_constants_to[e + 1] : std::uint32_t(e + 1);
     same_ends_to[e] = !last && same(ends, 8, e) ? same_ends_to[e + 1] : std::uint32_t(e + 1);
   }
+}
+
+double Beam6Plan::step_bytes(std::uint32_t first, std::uint32_t count) const {
+  double bytes = 0;
+  for (std::uint32_t e0 = first; e0 < first + count; e0 += kBeam6Block) {
+    const std::uint32_t n = std::min(kBeam6Block, first + count - e0);
+    bytes += n * (4 + 4) + (same_ends(e0, n) ? 1 : n) * 64 + (same_constants(e0, n) ? 1 : n) * 64;
+  }
+  return bytes;
 }
 
 }  // namespace tendril

@@ -19,6 +19,9 @@
 
 namespace tendril {
 
+// The step evaluates a plan's entries in blocks of this many (forces.cpp).
+inline constexpr std::uint32_t kBeam6Block = 64;
+
 struct Beam6Plan {
   bool current(const Model& m) const {
     return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity();
@@ -42,6 +45,12 @@ struct Beam6Plan {
   // (L .. torsion) or e's ends (end_i, end_j), bit for bit: entries e ..
   // same_constants_to[e] - 1 read alike.
   std::vector<std::uint32_t> same_constants_to, same_ends_to;
+  // Whether the step's block of entries [first, first + n) reads one entry's constants, or ends.
+  bool same_constants(std::uint32_t first, std::uint32_t n) const { return same_constants_to[first] >= first + n; }
+  bool same_ends(std::uint32_t first, std::uint32_t n) const { return same_ends_to[first] >= first + n; }
+  // The bytes of the plan the step reads for entries [first, first + count),
+  // taken in blocks from `first` on: ends, beam-end frames and constants.
+  double step_bytes(std::uint32_t first, std::uint32_t count) const;
 
  private:
   // each(out's column, in's column) for every per-entry column but elements

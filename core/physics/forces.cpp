@@ -127,8 +127,9 @@ TENDRIL_SIMD_CLONES void hinge_block(HingeBlock& h, const double* __restrict sti
 // quaternion product, toRotationMatrix, norm, dot and cross written out in
 // their order. An element the loop cannot finish (no length, or ends whose
 // mean z lies along the chord, where element_frame takes another axis) is
-// marked and evaluated again by beam6_ends in the scatter.
-constexpr std::uint32_t kBeam6Block = 64;
+// marked and evaluated again by beam6_ends in the scatter. A block (of
+// kBeam6Block, beam6_plan.hpp) inside a run of the same constants, or of the
+// same beam-end frames, reads its first entry's.
 
 // How far ahead beam6_forces asks for the plan's columns (two blocks), and
 // from how many entries: with 40 000 (5.4 MB of plan, in this machine's
@@ -277,7 +278,7 @@ void beam6_forces(const Beam6Plan& plan, const Beam6* beams, std::uint32_t first
     }
     // A block inside a run of the same constants, or of the same ends, reads
     // them once (Beam6Plan::same_*_to): a member's elements share them.
-    const bool same_constants = plan.same_constants_to[e0] >= e0 + n, same_ends = plan.same_ends_to[e0] >= e0 + n;
+    const bool same_constants = plan.same_constants(e0, n), same_ends = plan.same_ends(e0, n);
     // The plan's columns two blocks ahead that beam6_block will read in
     // place: the hardware's own prefetching falls behind on sixteen streams
     // at once (the 100K 6-DOF grid waited on them). Written here, not in a
@@ -285,16 +286,15 @@ void beam6_forces(const Beam6Plan& plan, const Beam6* beams, std::uint32_t first
     const std::size_t entries = plan.L.size();
     if (const std::uint32_t ahead = e0 + kBeam6Prefetch;
         entries >= kBeam6PrefetchFrom && std::size_t(ahead) + kBeam6Block <= entries) {
-      const std::uint32_t last = ahead + kBeam6Block;
       const double* ends[] = {plan.end_i[0].data(), plan.end_i[1].data(), plan.end_i[2].data(),
                               plan.end_i[3].data(), plan.end_j[0].data(), plan.end_j[1].data(),
                               plan.end_j[2].data(), plan.end_j[3].data()};
       const double* constants[] = {plan.L.data(),  plan.EA.data(), plan.prestress.data(), plan.k_static.data(),
                                    plan.kr.data(), plan.cz.data(), plan.cy.data(),        plan.torsion.data()};
-      if (plan.same_ends_to[ahead] < last)
+      if (!plan.same_ends(ahead, kBeam6Block))
         for (const double* column : ends)
           for (std::uint32_t m = 0; m < kBeam6Block; m += 8) __builtin_prefetch(column + ahead + m, 0, 2);  // 8 a line
-      if (plan.same_constants_to[ahead] < last)
+      if (!plan.same_constants(ahead, kBeam6Block))
         for (const double* column : constants)
           for (std::uint32_t m = 0; m < kBeam6Block; m += 8) __builtin_prefetch(column + ahead + m, 0, 2);
     }

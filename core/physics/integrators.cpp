@@ -630,14 +630,18 @@ double Solver::fused_step_bytes() const {
                 double(corner_chunk_shares_.items.size()) * (4 + 4 + 1 + 72 + 72);
   }
   // Per 6-DOF element of a chunk the chunk plan's ends, beam-end frames
-  // and constants, both nodes' frames gathered; per rotating
+  // and constants (a block in a run of the same frames or constants reads
+  // one entry's), both nodes' frames gathered; per rotating
   // particle its moment, torque and rotational stiffness written, inertia,
   // angular velocity read and written, then the drift: angular velocity
   // read, frame read and written (beam6_plan.hpp).
   double six_dof = 0;
   if (!P.rotational.empty()) {
     prepare_beam6_chunks();
-    six_dof = double(beam6_chunk_shares_.items.size()) * (8 + 64 + 64 + 64) +
+    const std::vector<std::uint32_t>& begin = beam6_chunk_shares_.begin;
+    for (std::size_t c = 0; c + 1 < begin.size(); ++c)
+      six_dof += beam6_chunk_plan_.step_bytes(begin[c], begin[c + 1] - begin[c]);
+    six_dof += double(beam6_chunk_shares_.items.size()) * 64 +
               double(P.rotational.size()) * (4 + 1 + 1 + 24 + 24 + 8 + 8 + 24 + 24 + 24 + 32 + 32);
   }
   // Two passes: id, position read and written, velocity read.
