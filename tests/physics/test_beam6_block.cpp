@@ -101,7 +101,8 @@ TEST_CASE("6-DOF beam blocks: runs of the same constants and ends, marked and re
   Model m;
   Section s{1e4, 2.5, 30, 0};
   s.EIy = 2.0, s.EIz = 3.5, s.GJ = 1.5;
-  // A straight beam of 150 elements, 0.5 m long up to element 100, then 0.75 m (both exact in binary, and so are their sums).
+  // A straight beam of 150 elements, 0.5 m long up to element 100, then
+  // 0.75 m (both exact in binary, and so are their sums).
   std::vector<ParticleId> straight;
   Vec3 x(0, 0, 0);
   for (int k = 0; k <= 150; ++k) {
