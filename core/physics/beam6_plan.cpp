@@ -58,18 +58,16 @@ void Beam6Plan::find_runs() {
   same_constants_to.resize(n);
   same_ends_to.resize(n);
   // Bit for bit (memcmp): a -0 is not a +0, and a NaN equals its own bits.
-  const auto same = [](const std::vector<double>* const* columns, std::size_t count, std::size_t a) {
-    for (std::size_t c = 0; c < count; ++c)
-      if (std::memcmp(&(*columns[c])[a], &(*columns[c])[a + 1], sizeof(double)) != 0) return false;
+  const auto same = [](const std::array<const double*, 8>& columns, std::size_t a) {
+    for (const double* column : columns)
+      if (std::memcmp(column + a, column + a + 1, sizeof(double)) != 0) return false;
     return true;
   };
-  const std::vector<double>* constants[] = {&L, &EA, &prestress, &k_static, &kr, &cz, &cy, &torsion};
-  const std::vector<double>* ends[] = {&end_i[0], &end_i[1], &end_i[2], &end_i[3],
-                                       &end_j[0], &end_j[1], &end_j[2], &end_j[3]};
+  const std::array<const double*, 8> constants = constant_columns(), ends = end_columns();
   for (std::size_t e = n; e-- > 0;) {
     const bool last = e + 1 == n;
-    same_constants_to[e] = !last && same(constants, 8, e) ? same_constants_to[e + 1] : std::uint32_t(e + 1);
-    same_ends_to[e] = !last && same(ends, 8, e) ? same_ends_to[e + 1] : std::uint32_t(e + 1);
+    same_constants_to[e] = !last && same(constants, e) ? same_constants_to[e + 1] : std::uint32_t(e + 1);
+    same_ends_to[e] = !last && same(ends, e) ? same_ends_to[e + 1] : std::uint32_t(e + 1);
   }
 }
 

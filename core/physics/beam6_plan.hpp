@@ -12,6 +12,7 @@
 // the same ends, are marked, so that a block of the step inside such a run
 // reads one entry's instead of streaming a column each.
 // Derived again whenever the model's revision or capacity moved.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -45,6 +46,15 @@ struct Beam6Plan {
   // (L .. torsion) or e's ends (end_i, end_j), bit for bit: entries e ..
   // same_constants_to[e] - 1 read alike.
   std::vector<std::uint32_t> same_constants_to, same_ends_to;
+  // The columns a run groups: the beam-end frames (end_i x, y, z, w, then
+  // end_j's) and the constants (L .. torsion).
+  std::array<const double*, 8> end_columns() const {
+    return {end_i[0].data(), end_i[1].data(), end_i[2].data(), end_i[3].data(),
+            end_j[0].data(), end_j[1].data(), end_j[2].data(), end_j[3].data()};
+  }
+  std::array<const double*, 8> constant_columns() const {
+    return {L.data(), EA.data(), prestress.data(), k_static.data(), kr.data(), cz.data(), cy.data(), torsion.data()};
+  }
   // Whether the step's block of entries [first, first + n) reads one entry's constants, or ends.
   bool same_constants(std::uint32_t first, std::uint32_t n) const { return same_constants_to[first] >= first + n; }
   bool same_ends(std::uint32_t first, std::uint32_t n) const { return same_ends_to[first] >= first + n; }

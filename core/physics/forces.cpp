@@ -286,16 +286,11 @@ void beam6_forces(const Beam6Plan& plan, const Beam6* beams, std::uint32_t first
     const std::size_t entries = plan.L.size();
     if (const std::uint32_t ahead = e0 + kBeam6Prefetch;
         entries >= kBeam6PrefetchFrom && std::size_t(ahead) + kBeam6Block <= entries) {
-      const double* ends[] = {plan.end_i[0].data(), plan.end_i[1].data(), plan.end_i[2].data(),
-                              plan.end_i[3].data(), plan.end_j[0].data(), plan.end_j[1].data(),
-                              plan.end_j[2].data(), plan.end_j[3].data()};
-      const double* constants[] = {plan.L.data(),  plan.EA.data(), plan.prestress.data(), plan.k_static.data(),
-                                   plan.kr.data(), plan.cz.data(), plan.cy.data(),        plan.torsion.data()};
       if (!plan.same_ends(ahead, kBeam6Block))
-        for (const double* column : ends)
+        for (const double* column : plan.end_columns())
           for (std::uint32_t m = 0; m < kBeam6Block; m += 8) __builtin_prefetch(column + ahead + m, 0, 2);  // 8 a line
       if (!plan.same_constants(ahead, kBeam6Block))
-        for (const double* column : constants)
+        for (const double* column : plan.constant_columns())
           for (std::uint32_t m = 0; m < kBeam6Block; m += 8) __builtin_prefetch(column + ahead + m, 0, 2);
     }
     if (same_constants) {
