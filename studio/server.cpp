@@ -204,19 +204,13 @@ bool Server::wants_frame() const {
   return std::chrono::steady_clock::now().time_since_epoch().count() >= frame_due_.load(std::memory_order_relaxed);
 }
 
-void Server::topology(std::shared_ptr<const std::string> bytes) {
+void Server::frame(std::shared_ptr<const std::string> bytes, bool urgent, std::shared_ptr<const std::string> topology) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    topology_ = std::move(bytes);
-    ++topology_seq_;
-    ++news_;
-  }
-  wake_.notify_all();
-}
-
-void Server::frame(std::shared_ptr<const std::string> bytes, bool urgent) {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
+    if (topology) {
+      topology_ = std::move(topology);
+      ++topology_seq_;
+    }
     frame_ = std::move(bytes);
     frame_urgent_ = urgent;
     ++frame_seq_;
@@ -247,9 +241,9 @@ void Server::broadcast(const std::string& text) {
 }
 
 // The one writer: each tab's queued replies in order, then the topology when
-// it has an older one, then the latest frame when it took the last and its
-// rate allows. It sleeps until there is news, or until a frame it holds
-// back falls due.
+// it has an older one, then the latest frame (always of that topology) when
+// it took the last and its rate allows, or the topology is new to it. It
+// sleeps until there is news, or until a frame it holds back falls due.
 void Server::sender() {
   std::unique_lock<std::mutex> lock(mutex_);
   std::uint64_t seen = 0;
@@ -266,12 +260,13 @@ void Server::sender() {
     for (auto& [id, c] : clients_) {
       std::vector<Message> out(c->queue.begin(), c->queue.end());
       c->queue.clear();
-      if (topology_ && c->topology_sent != topology_seq_) {
+      const bool new_topology = topology_ && c->topology_sent != topology_seq_;
+      if (new_topology) {
         out.push_back({topology_, true});
         c->topology_sent = topology_seq_;
       }
       if (frame_ && c->rate > 0 && c->ready && c->frame_sent != frame_seq_) {
-        if (now >= c->next_frame || frame_urgent_) {
+        if (now >= c->next_frame || frame_urgent_ || new_topology) {  // a topology is drawn with its frame
           out.push_back({frame_, true});
           c->frame_sent = frame_seq_;
           c->ready = false;

@@ -46,8 +46,8 @@ class Server : public Outbox {
   std::string url() const;  // what to open, with the token when one is needed
   int port() const { return port_; }
 
-  void topology(std::shared_ptr<const std::string> bytes) override;
-  void frame(std::shared_ptr<const std::string> bytes, bool urgent) override;
+  void frame(std::shared_ptr<const std::string> bytes, bool urgent,
+             std::shared_ptr<const std::string> topology = nullptr) override;
   void send(ClientId to, const std::string& bytes, bool binary) override;
   void broadcast(const std::string& text) override;
   bool wants_frame() const override;

@@ -306,13 +306,14 @@ void Session::publish(bool force, bool urgent) {
 void Session::build_frame(bool force, bool urgent) {
   if (!force && !out_.wants_frame()) return;
   const lua::Scene& s = scene_of(L_, model_ref_);
+  std::shared_ptr<const std::string> new_topology;  // sent with the frame: never one without the other
   if (s.model.revision != topology_model_revision_) {
     Topology t = topology_of(s.model);
     topology_model_revision_ = s.model.revision;
     if (shown_.stale || !t.same_drawing(topology_)) {
       topology_ = std::move(t);
       topology_.revision = ++topology_tag_;
-      out_.topology(std::make_shared<const std::string>(encode(topology_)));
+      new_topology = std::make_shared<const std::string>(encode(topology_));
     }
   }
   if (!force && !shown_.stale && shown_.steps == s.solver.steps() && shown_.topology == topology_tag_) return;
@@ -321,7 +322,7 @@ void Session::build_frame(bool force, bool urgent) {
   if (const Field* f = find_field(field_)) values = f->values(s.model, topology_);
   std::shared_ptr<std::string> frame = free_frame_buffer();
   encode_frame(s.model, s.solver, topology_, values, *frame);
-  out_.frame(std::move(frame), urgent);
+  out_.frame(std::move(frame), urgent, std::move(new_topology));
 }
 
 // A frame is written into a buffer the server no longer holds (its only

@@ -33,10 +33,13 @@ using ClientId = std::uint64_t;
 class Outbox {
  public:
   virtual ~Outbox() = default;
-  virtual void topology(std::shared_ptr<const std::string> bytes) = 0;  // every page, before later frames
   // The latest frame, at each page's rate; an urgent one (the first to show
-  // a command's effect) goes out at once.
-  virtual void frame(std::shared_ptr<const std::string> bytes, bool urgent) = 0;
+  // a command's effect) goes out at once. With `topology` (the frame is the
+  // first drawn on it) both change together: a page gets the topology and,
+  // as soon as it took its last frame, this one, and never a frame of an
+  // older topology after it.
+  virtual void frame(std::shared_ptr<const std::string> bytes, bool urgent,
+                     std::shared_ptr<const std::string> topology = nullptr) = 0;
   virtual void send(ClientId to, const std::string& bytes, bool binary) = 0;
   virtual void broadcast(const std::string& text) = 0;
   virtual bool wants_frame() const = 0;  // a page is due a frame (cheap: called after every step)

@@ -92,7 +92,7 @@ await run('draw: a dense net', scene('bench/studio_net.lua'), ['--param', 'parti
     c.update();
   }, factor);
   await away(3);
-  const dense = await until(page, () => studio.view.dots.visible && studio.view.scale === 1 &&
+  const dense = await until(page, () => studio.view.frame && studio.view.dots.visible && studio.view.scale === 1 &&
                                       { edge: studio.view.edgePixels, dots: studio.view.dots.geometry.drawRange.count, bars: studio.view.patchBars.visible });
   check(dense.edge < 6 && !dense.bars, `far away the net's edges are ${dense.edge.toFixed(1)} px on screen and its bars are left out`);
   await screenshot(page, 'studio-dense.png');
@@ -104,13 +104,32 @@ await run('draw: a dense net', scene('bench/studio_net.lua'), ['--param', 'parti
       else if (simple < 0 && k > t.count / 2) simple = k;
     }
     const [x, y] = studio.project(t.ids[simple]);
-    return { others: out, simple: studio.pixel(x, y), count: t.count };
+    return { others: out, simple: studio.pixel(x, y), simpleId: t.ids[simple], count: t.count };
   });
   check(dense.dots === shown.others.length && dense.dots < shown.count / 10, `${dense.dots} dots drawn, the particles that are not simple (of ${shown.count})`);
   const r = checkColours(shown.others, 'dense');
   check(r.matched >= 4, `those ${r.matched} are drawn in their state's colour (${r.seen.join(', ')})`);
   const [red, green, blue] = shown.simple;
   check(green > red + 40 && blue > red + 40 && Math.abs(green - blue) < 24, `a simple particle in the middle shows the surface tinted with the simple state's cyan (${shown.simple})`);
+  // A new topology comes a moment before its first frame (each page's hello
+  // gets one): meanwhile the picture and the particles' places stay.
+  const waiting = await page.evaluate((id) => {
+    const v = studio.view, before = studio.project(id);
+    v.setTopology(studio.topology);
+    v.render();
+    const during = { xy: studio.project(id), rgb: studio.pixel(...before) };
+    v.topology = null;  // none of its particles known before: none has a place yet
+    v.setTopology(studio.topology);
+    v.render();
+    const unknown = studio.pixel(...before);
+    v.setFrame(studio.frame);
+    return { before, during, unknown };
+  }, shown.simpleId);
+  const moved = Math.hypot(waiting.during.xy[0] - waiting.before[0], waiting.during.xy[1] - waiting.before[1]);
+  check(moved < 1e-3 && waiting.during.rgb.every((c, i) => Math.abs(c - shown.simple[i]) <= 2),
+        `a topology without its frame yet leaves the particle in place (${moved.toFixed(4)} px) and the picture as it was (${waiting.during.rgb})`);
+  check(waiting.unknown.every((c, i) => Math.abs(c - shown.simple[i]) <= 2),
+        `nor is a topology of particles not seen before drawn without its frame (${waiting.unknown})`);
   await away(1 / 3);
   const close = await until(page, () => studio.view.points.visible && !studio.view.dots.visible && { edge: studio.view.edgePixels, bars: studio.view.patchBars.visible });
   check(close.edge >= 6 && close.bars, `close up (edges ${close.edge.toFixed(1)} px) every particle is a dot again and the bars are drawn`);

@@ -138,6 +138,7 @@ export class View3D {
   // surfaces; only cables (solid or dashed when slack) and a colour map's
   // edges (a colour per edge) are written out edge by edge.
   setTopology(t) {
+    const before = this.topology, was = this.positions;
     this.clear();
     this.topology = t;
     this.frame = null;
@@ -146,7 +147,15 @@ export class View3D {
     // Enough primitives that a software rasteriser's frame can be slow:
     // below, a slow frame is the machine's load, not the drawing's (studio.js).
     this.large = n + ne + t.triangles.length / 3 >= 10000;
+    // Until its first frame comes, a particle that was there keeps its place
+    // (what project and pick see then matches the picture, which stays).
     this.positions = new Float32Array(3 * n);
+    if (before) {
+      for (let k = 0; k < n; ++k) {
+        const j = before.indexOf.get(t.ids[k]);
+        if (j !== undefined) this.positions.set(was.subarray(3 * j, 3 * j + 3), 3 * k);
+      }
+    }
     this.position = new THREE.BufferAttribute(this.positions, 3).setUsage(THREE.DynamicDrawUsage);
     const pg = new THREE.BufferGeometry();
     pg.setAttribute('position', this.position);
@@ -332,8 +341,11 @@ export class View3D {
   // only darken their surface, and a dot at every particle. There the
   // patch bars are left out, and the simple particles on the surface are
   // shown by its colour (paintStates) rather than a dot each.
+  // A topology is not drawn before its first frame (its positions): the
+  // picture of the last one stays until then.
   render() {
     if (!this.topology) return this.renderer.render(this.scene, this.camera);
+    if (!this.frame) return;
     const dense = this.surfaceDense();
     if (this.patchBars) this.patchBars.visible = this.edgesShown && !dense;
     this.points.visible = !dense;

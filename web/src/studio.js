@@ -77,6 +77,7 @@ function onBinary(buffer) {
     if (!studio.preview) { view.setTopology(studio.topology); paintSelection(); }
   } else if (k === P.FRAME) {
     const f = P.readFrame(buffer);
+    send({ cmd: 'ready' });  // taken, even when dropped: the server sends nothing more until it hears this
     if (!studio.topology || f.revision !== studio.topology.revision) return;
     studio.frame = f;
     studio.frames++;
@@ -85,7 +86,6 @@ function onBinary(buffer) {
       f.dragAt = dragSent.at;
       dragSent = null;
     }
-    send({ cmd: 'ready' });
     if (undrawn && f.dragAt === undefined) f.dragAt = undrawn.dragAt;  // a newer frame shows the drag too
     if (!studio.preview && drawing) undrawn = f;
     plotResidual(f);
