@@ -300,6 +300,8 @@ void Session::publish(bool force, bool urgent) {
   } catch (const std::exception& e) {  // a drawing problem never stops the scene; say it once
     if (!frame_error_) out_.broadcast(json{{"type", "error"}, {"message", std::string("frame: ") + e.what()}}.dump());
     frame_error_ = true;
+    topology_model_revision_ = ~0ull;  // the topology built with it was not sent either: again next time
+    shown_.stale = true;
   }
 }
 
