@@ -6,7 +6,7 @@
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { check, openPage, run, scene, screenshot, screenshotPixels, tendril, until } from './harness.mjs';
+import { check, openPage, run, scene, screenshot, screenshotPixels, slow, tendril, until } from './harness.mjs';
 
 // A free (unlocked) particle of the given state at least 14 px from all others on screen,
 // inside the drawing (not under a panel).
@@ -88,15 +88,20 @@ await run('interact', scene('scripts/examples/grow.lua'), ['--speed', '0'], asyn
 
   // --- a refused rule shows why ----------------------------------------------------------------
   // The model moves on after the insertion: look again for up to 5 s for a
-  // child particle clear of the others (under a loaded machine the first
-  // frames after a topology change may have none).
-  let q = null;
-  for (let tries = 0; tries < 20 && q === null; ++tries) {
+  // child particle clear of the others, and click it until it is the
+  // selection (a frame that came between the look and the click may have
+  // moved it from under the cursor).
+  let q = null, picked = [];
+  for (let tries = 0; tries < 20; ++tries) {
     q = await lonely(page, CHILD, [p.id]);
-    if (q === null) await page.waitForTimeout(250);
+    if (q !== null) {
+      await page.mouse.click(q.x, q.y);
+      picked = await page.evaluate(() => studio.selection.map((s) => s.id));
+      if (picked.length === 1 && picked[0] === q.id) break;
+    }
+    await page.waitForTimeout(250);
   }
-  check(q !== null, `another child particle to pick: ${JSON.stringify(q)}`);
-  await page.mouse.click(q.x, q.y);
+  check(q !== null && picked.join() === String(q.id), `another child particle picked by clicking: ${JSON.stringify(q)} (${picked})`);
   await page.click('div[data-rule="delete_particle"] .rule-name');
   await page.click('div[data-rule="delete_particle"] .apply');
   await until(page, () => document.getElementById('message').className === 'refused');
@@ -110,6 +115,16 @@ await run('interact', scene('scripts/examples/grow.lua'), ['--speed', '0'], asyn
   const [shown, drawn] = [await screenshotPixels(page, below), await page.evaluate((pts) => pts.map(([x, y]) => studio.pixel(x, y)), below)];
   const worst = Math.max(...shown.map((c, i) => Math.max(...c.map((v, k) => Math.abs(v - drawn[i][k])))));
   check(worst <= 24, `below the settings panel the screenshot shows what the canvas drew (largest difference ${worst} of 255)`);
+  // An argument left empty is named by the page, and nothing is sent.
+  const rulesAsked = await page.evaluate(() => studio.replies.filter((r) => r.cmd === 'rule').length);
+  await page.fill('div[data-rule="delete_particle"] input', '');
+  await page.click('div[data-rule="delete_particle"] .apply');
+  await until(page, () => document.getElementById('message').textContent.includes('give'));
+  const forgot = await page.textContent('#message');
+  await page.waitForTimeout(300 * slow);
+  const rulesAfter = await page.evaluate(() => studio.replies.filter((r) => r.cmd === 'rule').length);
+  check(/: give \w+ \(click a particle/.test(forgot) && rulesAfter === rulesAsked,
+        `a rule applied with its argument left empty is not sent, and the page names what is missing: "${forgot}"`);
 
   // --- timeline --------------------------------------------------------------------------------
   const live = await page.evaluate(() => studio.topology.count);

@@ -260,9 +260,14 @@ function renderPalette(palette) {
     const disarm = () => { form.hidden = true; armed = null; document.body.classList.remove('armed'); view.setBackground(false); };
     cancel.onclick = disarm;
     apply.onclick = async () => {
+      const missing = inputs.filter((i) => i.value.trim() === '').map((i) => i.name);
+      if (missing.length) {  // null, typed, is an argument; an empty field is one forgotten
+        say(`${r.name}: give ${missing.join(', ')} (click a particle or a block, or type its id)`, false);
+        return;
+      }
       let values;
       try {
-        values = inputs.map((i) => (i.value.trim() === '' ? null : JSON.parse(i.value)));
+        values = inputs.map((i) => JSON.parse(i.value));
       } catch (e) {
         say(`${r.name}: an argument is not JSON (${e.message})`, false);
         return;
