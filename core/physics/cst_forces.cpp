@@ -109,32 +109,37 @@ TENDRIL_SIMD_CLONES void cst_block(CstBlock& t, std::uint32_t n, double gf) {
     longest = longest < bb ? bb : longest;
     longest = longest < cc ? cc : longest;
     t.flat[m] = !(twice_area > kDegenerate * longest) ? 1.0 : 0.0;
-    const double l1 = std::sqrt(aa);
-    const double e1x = ax / l1, e1y = ay / l1, e1z = az / l1;
-    const double e3x = nx / twice_area, e3y = ny / twice_area, e3z = nz / twice_area;
-    const double e2x = e3y * e1z - e3z * e1y, e2y = e3z * e1x - e3x * e1z, e2z = e3x * e1y - e3y * e1x;  // e3 x e1
+    // The frame with two divisions: e1 = a / l1, e2 = e3 x e1 = (n x a) /
+    // (|n| l1). In it the corners' opposite sides (c, -b, a) have the
+    // coordinates (l1 - b1, h), (b1, -h) and (-l1, 0), b1 = b . e1 and h
+    // = |n| / l1 the height of k over side 1, and side x e3 turns (s1, s2)
+    // into (s2, -s1): the pulls of 1/2 sigma m need no cross products.
+    const double l1 = std::sqrt(aa), inv_l1 = 1.0 / l1, inv_e2 = inv_l1 / twice_area;
+    const double e1x = ax * inv_l1, e1y = ay * inv_l1, e1z = az * inv_l1;
+    const double e2x = (ny * az - nz * ay) * inv_e2, e2y = (nz * ax - nx * az) * inv_e2,
+                 e2z = (nx * ay - ny * ax) * inv_e2;
+    const double h = twice_area * inv_l1, b1 = (bx * ax + by * ay + bz * az) * inv_l1;
     double sx = t.sigma_warp[m], sy = t.sigma_weft[m], tau = 0;
     {  // analysis: eq. 3.37-3.38
-      const double h = twice_area / l1, c = bx * e1x + by * e1y + bz * e1z;
       const double ex = l1 / r_l1 - 1, ey = h / r_h - 1;
-      const double gamma = (c - r_c * (1 + ex)) / r_h;
+      const double gamma = (b1 - r_c * (1 + ex)) / r_h;
       const double ax_sx = sx + (dxx * ex + dxy * ey), ax_sy = sy + (dyx * ex + dyy * ey);
       sx = analysis ? ax_sx : sx;
       sy = analysis ? ax_sy : sy;
       tau = analysis ? G * gamma : 0.0;
     }
-    // 1/2 sigma m for the side opposite a corner: out = side x e3.
-    auto pull = [&](double px, double py, double pz, double& fx, double& fy, double& fz) TENDRIL_INLINE {
-      const double ox = py * e3z - pz * e3y, oy = pz * e3x - px * e3z, oz = px * e3y - py * e3x;
-      const double u = ox * e1x + oy * e1y + oz * e1z, v = ox * e2x + oy * e2y + oz * e2z;
-      const double A = sx * u + tau * v, B = tau * u + sy * v;
-      fx = 0.5 * (A * e1x + B * e2x);
-      fy = 0.5 * (A * e1y + B * e2y);
-      fz = 0.5 * (A * e1z + B * e2z);
-    };
-    pull(cx, cy, cz, t.fix[m], t.fiy[m], t.fiz[m]);
-    pull(-bx, -by, -bz, t.fjx[m], t.fjy[m], t.fjz[m]);
-    pull(ax, ay, az, t.fkx[m], t.fky[m], t.fkz[m]);
+    // Corner i (u = h, v = l1 - b1) and k (u = 0, v = -l1): A = sx u + tau
+    // v along e1, B = tau u + sy v along e2, halved; j takes what keeps the
+    // three in equilibrium. Without analysis tau is 0 and its terms go.
+    const double hx = 0.5 * sx, hy = 0.5 * sy, ht = 0.5 * tau, vi = l1 - b1;
+    const double Ai = kAnalysis ? hx * h + ht * vi : hx * h, Bi = kAnalysis ? ht * h + hy * vi : hy * vi;
+    const double Ak = kAnalysis ? -(ht * l1) : 0.0, Bk = -(hy * l1);
+    const double fix = Ai * e1x + Bi * e2x, fiy = Ai * e1y + Bi * e2y, fiz = Ai * e1z + Bi * e2z;
+    const double fkx = kAnalysis ? Ak * e1x + Bk * e2x : Bk * e2x, fky = kAnalysis ? Ak * e1y + Bk * e2y : Bk * e2y,
+                 fkz = kAnalysis ? Ak * e1z + Bk * e2z : Bk * e2z;
+    t.fix[m] = fix, t.fiy[m] = fiy, t.fiz[m] = fiz;
+    t.fkx[m] = fkx, t.fky[m] = fky, t.fkz[m] = fkz;
+    t.fjx[m] = -(fix + fkx), t.fjy[m] = -(fiy + fky), t.fjz[m] = -(fiz + fkz);
     // Eq. 3.40: the geometric stiffness of a corner under tension grows with
     // (opposite side)^2 / (twice the area), i.e. base over height; both
     // stresses count, so neither direction is left without mass.
