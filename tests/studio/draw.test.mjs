@@ -123,6 +123,7 @@ await run('draw: a dense net', scene('bench/studio_net.lua'), ['--param', 'parti
     v.render();
     const unknown = studio.pixel(...before);
     v.setFrame(studio.frame);
+    v.render();  // what the page shows derived again (the new objects start with every dot shown)
     return { before, during, unknown };
   }, shown.simpleId);
   const moved = Math.hypot(waiting.during.xy[0] - waiting.before[0], waiting.during.xy[1] - waiting.before[1]);
