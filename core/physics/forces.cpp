@@ -262,8 +262,9 @@ std::uint32_t hinge_forces(const Hinge* hinges, const std::uint32_t* items, std:
 // first + count, in its order, into `out` (element_sinks.hpp), as
 // hinge_forces adds. F - f is F + (-f) exactly.
 template <bool kShared, class Sink>
-void beam6_forces(const Beam6Plan& plan, const Beam6* beams, std::uint32_t first, std::uint32_t count,
-                  Owned<kShared> own, const Vec3* x, const Quat* q, double gf, Sink out) {
+TENDRIL_SIMD_CLONES void beam6_forces(const Beam6Plan& plan, const Beam6* beams, std::uint32_t first,
+                                      std::uint32_t count, Owned<kShared> own, const Vec3* x, const Quat* q,
+                                      double gf, Sink out) {
   const ParticleId *pi = plan.i.data(), *pj = plan.j.data();
   Beam6Block bb;
   for (std::uint32_t e0 = first; e0 < first + count; e0 += kBeam6Block) {

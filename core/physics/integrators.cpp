@@ -110,7 +110,7 @@ struct KickTotals {
 // physical one: 1 for a massless particle locked on every axis) and its
 // force, stiffness and mass checked; else the masses are read.
 template <bool kPrepare, bool kPhysical>
-KickTotals kick_pass(const KickPass& a, KickTotals t) {
+TENDRIL_SIMD_CLONES KickTotals kick_pass(const KickPass& a, KickTotals t) {
   const ParticleId* __restrict ids = a.ids;
   const std::uint8_t* __restrict active = a.active;
   const std::uint8_t* __restrict lock = a.lock;
