@@ -80,7 +80,8 @@ TENDRIL_SIMD_CLONES void frame_block(FrameBlock& f, std::uint32_t n) {
 
 }  // namespace
 
-void drift_frames(const ParticleId* ids, std::uint32_t n, const std::uint8_t* active, double dt, const Vec3* w, Quat* R) {
+TENDRIL_SIMD_CLONES void drift_frames(const ParticleId* ids, std::uint32_t n, const std::uint8_t* active, double dt,
+                                      const Vec3* w, Quat* R) {
   FrameBlock f;
   ParticleId at[kFrameBlock];
   for (std::uint32_t e0 = 0; e0 < n; e0 += kFrameBlock) {
