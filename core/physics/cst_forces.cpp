@@ -267,11 +267,10 @@ TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const 
 }
 
 // The corners of every projected triangle, once each: its G-strings, and
-// the part of its pull along its normal. A corner in more than one such
-// triangle then adds +0 (in the model's order of triangles it was visited
-// once per triangle, the later visits adding zeros: -0 + 0 is +0). Each
-// slot is cleared for the next call. The slots slots[0 .. count) (a
-// chunk's) or all of them (slots null), those of particles it owns.
+// the part of its pull along its normal, added as one force (one addition
+// into the particle's sum, not two in a row on the same sum). Each slot is
+// cleared for the next call. The slots slots[0 .. count) (a chunk's) or
+// all of them (slots null), those of particles it owns.
 // One copy, not three: GCC's AVX copies of it move a register with a form of
 // vmovq that valgrind 3.19 cannot decode (SIGILL), and callgrind is how the
 // step's instructions are counted (docs/performance.md).
@@ -286,9 +285,9 @@ void project_corners(const CstPlan& plan, const std::uint32_t* slots, std::uint3
     CstCornerSums& c = sums[s];
     const Vec3 normal = c.normal, smooth = c.smooth;
     const double nn = normal.squaredNorm();
-    out.force(p, smooth);
-    if (nn > 0) out.force(p, ((c.pull - smooth).dot(normal) / nn) * normal);
-    if (plan.shared[s]) out.force(p, Vec3::Zero());
+    const double along = nn > 0 ? (c.pull - smooth).dot(normal) / nn : 0.0;
+    out.force(p, Vec3(smooth.x() + along * normal.x(), smooth.y() + along * normal.y(),
+                      smooth.z() + along * normal.z()));
     c = CstCornerSums{};
   }
 }

@@ -11,7 +11,6 @@ void CstPlan::derive(const Model& m) {
   slot.assign(3 * n, kNoSlot);
   analysis.resize(n);
   corner.clear();
-  shared.clear();
   std::vector<std::uint32_t> slot_of(m.particles.capacity(), kNoSlot);
   for (std::size_t e = 0; e < n; ++e) {
     const Cst& t = csts[e];
@@ -30,9 +29,6 @@ void CstPlan::derive(const Model& m) {
       if (s == kNoSlot) {
         s = std::uint32_t(corner.size());
         corner.push_back(corners[c]);
-        shared.push_back(0);
-      } else {
-        shared[s] = 1;
       }
       if (along_normal[e] >> c & 1) slot[3 * e + c] = s;
     }

@@ -37,9 +37,7 @@ struct CstPlan {
   static constexpr std::uint8_t kAllCorners = 7;  // along_normal of a triangle with every corner interior
   std::vector<std::uint32_t> slot;  // 3 per triangle: its corners' slots, kNoSlot where none
   std::vector<std::uint8_t> analysis;  // 1: in analysis (eq. 3.37-3.39), else form-finding
-  // Per slot: the corner, and whether more than one triangle projects it.
-  std::vector<ParticleId> corner;
-  std::vector<std::uint8_t> shared;
+  std::vector<ParticleId> corner;  // per slot: the corner
 
  private:
   const Model* model_ = nullptr;
