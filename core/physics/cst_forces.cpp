@@ -56,8 +56,8 @@ constexpr double kDegenerate = 1e-10;
 // their sides gathered, one vectorised loop without branches for the
 // frame, the stresses, the three corner pulls and the stiffnesses, then the
 // scatter in the model's order (the G-strings, the pulls and their normals,
-// the stiffnesses), so every sum is added as one triangle at a time adds
-// it. The loop writes out Eigen's cross, dot and norm in their order.
+// the stiffnesses), so every sum is added in the model's order of its
+// triangles, whatever the block size or the thread count.
 constexpr std::uint32_t kCstBlock = 64;
 
 struct CstBlock {
