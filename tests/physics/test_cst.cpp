@@ -2,8 +2,9 @@
 // references: an equal-stress membrane between two rings becomes the
 // catenoid; an orthotropic prestressed flat square under a small normal load
 // deflects like the linear membrane n_x w_xx + n_y w_yy = -p; a homogeneous
-// strain gives the stresses of eq. 3.37-3.39 on a cut; a triangle collapsing
-// to a line stays finite.
+// strain gives the stresses of eq. 3.37-3.39 on a cut; each corner's pull
+// is half the stress tensor applied to its opposite side's outward normal;
+// a triangle collapsing to a line stays finite.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -182,6 +183,45 @@ TEST_CASE("cst: a homogeneous strain gives the stresses of eq. 3.37-3.39 on a cu
   CHECK(membrane.x() == doctest::Approx(expected.x()).epsilon(1e-12));
   CHECK(membrane.y() == doctest::Approx(expected.y()).epsilon(1e-12));
   CHECK(std::abs(membrane.z()) < 1e-12);
+}
+
+TEST_CASE("cst: each corner's pull is half the stress tensor applied to its opposite side's outward normal") {
+  // One quad, skewed out of its plane, every corner on the boundary (so
+  // each takes its whole pull). The reference is eq. 3.36's uniform stress
+  // written with the frame's tensor, S = sigma_x e1 e1 + sigma_y e2 e2, and
+  // the corner's 1/2 S m, m = (opposite side) x e3 (Eigen's cross
+  // products); the step computes it from the sides' coordinates in the
+  // frame instead (stop 43), equal to rounding: within 1e-13 of the pull's
+  // scale.
+  FlatSquare sq(1, 1.0);
+  Model& m = sq.m;
+  const auto tris = triangles_of(m, sq.patch, Vec3(1, 0, 0));
+  const double sx = 3, sy = 2;
+  m.set_patch_formulation(sq.patch, form(sx, sy), tris);
+  const Vec3 moved[4] = {Vec3(0, 0, 0.1), Vec3(1.2, 0.1, -0.2), Vec3(-0.1, 0.9, 0.3), Vec3(1.1, 1.3, 0.05)};
+  for (int q = 0; q < 4; ++q) m.particles.position[sq.ps[q]] = moved[q];
+  Solver solver(m);
+  solver.compute_forces();
+  std::vector<Vec3> expected(m.particles.capacity(), Vec3::Zero());
+  const auto& x = m.particles.position;
+  for (const Bar& b : m.bars.items) {
+    const Vec3 d = x[b.j] - x[b.i];
+    const double T = b.prestress + b.EA / b.rest_length * (d.norm() - b.rest_length);
+    expected[b.i] += T * d / d.norm();
+    expected[b.j] -= T * d / d.norm();
+  }
+  for (const auto& t : tris) {
+    const Vec3 a = x[t[1]] - x[t[0]], b = x[t[2]] - x[t[0]], c = x[t[2]] - x[t[1]];
+    const Vec3 e1 = a.normalized(), e3 = a.cross(b).normalized(), e2 = e3.cross(e1);
+    const Eigen::Matrix3d S = sx * e1 * e1.transpose() + sy * e2 * e2.transpose();
+    expected[t[0]] += 0.5 * S * c.cross(e3);
+    expected[t[1]] += 0.5 * S * (-b).cross(e3);
+    expected[t[2]] += 0.5 * S * a.cross(e3);
+  }
+  for (ParticleId q : sq.ps) {
+    CAPTURE(q);
+    CHECK((m.particles.force[q] - expected[q]).norm() < 1e-13 * (sx + sy));
+  }
 }
 
 TEST_CASE("cst: a membrane triangle collapsing to a line stays finite") {
