@@ -155,14 +155,31 @@ TENDRIL_SIMD_CLONES void cst_block(CstBlock& t, std::uint32_t n, double gf) {
 TENDRIL_INLINE inline void add_into(Vec3& a, const Vec3& b) { a.x() += b.x(), a.y() += b.y(), a.z() += b.z(); }
 TENDRIL_INLINE inline void subtract_from(Vec3& a, const Vec3& b) { a.x() -= b.x(), a.y() -= b.y(), a.z() -= b.z(); }
 
+// Where a projected corner's sums are: the model's slot of triangle e's
+// corner c (one thread's triangles), or the chunk's own row of particle p
+// (a chunk's: rows indexed like its force sums, in a scratch that stays in
+// the cache, read without the slots' indirection).
+struct CornerSlots {
+  const std::uint32_t* slot;
+  CstCornerSums* sums;
+  TENDRIL_INLINE CstCornerSums& operator()(std::uint32_t e, int c, ParticleId) const { return sums[slot[3 * e + c]]; }
+  TENDRIL_INLINE CstCornerSums& of_slot(std::uint32_t s, ParticleId) const { return sums[s]; }
+};
+struct CornerRows {
+  CstCornerSums* rows;
+  ParticleId base;
+  TENDRIL_INLINE CstCornerSums& operator()(std::uint32_t, int, ParticleId p) const { return rows[p - base]; }
+  TENDRIL_INLINE CstCornerSums& of_slot(std::uint32_t, ParticleId p) const { return rows[p - base]; }
+};
+
 // One thread's (or chunk's) triangles: items[0 .. count) (kShared) or
 // 0 .. count, in the model's order, their forces and G-strings added into
 // the particles it owns, the pulls of its projected corners into their
-// slots.
-template <bool kShared, class Sink>
+// sums.
+template <bool kShared, class Sink, class Corners>
 TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const std::uint32_t* items,
                                     std::uint32_t count, Owned<kShared> own, const Vec3* x, double gf, Sink out,
-                                    CstCornerSums* sums) {
+                                    Corners corner) {
   const ParticleId *ti = plan.i.data(), *tj = plan.j.data(), *tk = plan.k.data();
   CstBlock tb;
   for (std::uint32_t e0 = 0; e0 < count; e0 += kCstBlock) {
@@ -194,7 +211,6 @@ TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const 
     for (std::uint32_t m = 0; m < n; ++m) {
       const std::uint32_t e = kShared ? items[e0 + m] : e0 + m;
       const ParticleId i = ti[e], j = tj[e], k = tk[e];
-      const std::uint32_t* slot = plan.slot.data() + 3 * e;
       const Vec3 nrm(tb.nx[m], tb.ny[m], tb.nz[m]);
       // A projected corner: its pull, and the normal oriented to its sum so
       // far (projected in project_corners, once all its triangles are in).
@@ -211,7 +227,7 @@ TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const 
         // sum back to back.
         const double q = plan.g_string[e];
         const Vec3 qa(q * tb.ax[m], q * tb.ay[m], q * tb.az[m]), qc(q * tb.cx[m], q * tb.cy[m], q * tb.cz[m]);
-        CstCornerSums &ci = sums[slot[0]], &cj = sums[slot[1]], &ck = sums[slot[2]];
+        CstCornerSums &ci = corner(e, 0, i), &cj = corner(e, 1, j), &ck = corner(e, 2, k);
         add_into(ci.smooth, qa);
         cj.smooth = Vec3((cj.smooth.x() - qa.x()) + qc.x(), (cj.smooth.y() - qa.y()) + qc.y(),
                          (cj.smooth.z() - qa.z()) + qc.z());
@@ -230,11 +246,11 @@ TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const 
         auto g_string = [&](ParticleId u, int cu, bool own_u, ParticleId v, int cv, bool own_v, const Vec3& uv,
                             double q) TENDRIL_INLINE {
           if ((along_normal >> cu & 1) && own_u) {
-            add_into(sums[slot[cu]].smooth, Vec3(q * uv.x(), q * uv.y(), q * uv.z()));
+            add_into(corner(e, cu, u).smooth, Vec3(q * uv.x(), q * uv.y(), q * uv.z()));
             out.stiffness(u, q);
           }
           if ((along_normal >> cv & 1) && own_v) {
-            subtract_from(sums[slot[cv]].smooth, Vec3(q * uv.x(), q * uv.y(), q * uv.z()));
+            subtract_from(corner(e, cv, v).smooth, Vec3(q * uv.x(), q * uv.y(), q * uv.z()));
             out.stiffness(v, q);
           }
         };
@@ -251,12 +267,12 @@ TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const 
       // A corner's force and stiffness go to different lanes of a sum, so
       // adding them at once (one 4-lane addition in a chunk's sums) adds to
       // each lane what the force's and then the stiffness's addition add.
-      auto add = [&](ParticleId p, int corner, const Vec3& f, double stiffness) TENDRIL_INLINE {
-        if (!(along_normal >> corner & 1)) {
+      auto add = [&](ParticleId p, int c, const Vec3& f, double stiffness) TENDRIL_INLINE {
+        if (!(along_normal >> c & 1)) {
           out.force_stiffness(p, f, stiffness);
           return;
         }
-        pull_into(sums[slot[corner]], f);
+        pull_into(corner(e, c, p), f);
         out.stiffness(p, stiffness);
       };
       if (own_i) add(i, 0, Vec3(tb.fix[m], tb.fiy[m], tb.fiz[m]), tb.si[m]);
@@ -274,15 +290,15 @@ TENDRIL_SIMD_CLONES void cst_forces(const CstPlan& plan, const Cst* csts, const 
 // One copy, not three: GCC's AVX copies of it move a register with a form of
 // vmovq that valgrind 3.19 cannot decode (SIGILL), and callgrind is how the
 // step's instructions are counted (docs/performance.md).
-template <bool kShared, class Sink>
+template <bool kShared, class Sink, class Corners>
 void project_corners(const CstPlan& plan, const std::uint32_t* slots, std::uint32_t count, Owned<kShared> own,
-                     Sink out, CstCornerSums* sums) {
+                     Sink out, Corners corners) {
   if (!slots) count = std::uint32_t(plan.corner.size());
   for (std::uint32_t n = 0; n < count; ++n) {
     const std::uint32_t s = slots ? slots[n] : n;
     const ParticleId p = plan.corner[s];
     if (!own(p)) continue;
-    CstCornerSums& c = sums[s];
+    CstCornerSums& c = corners.of_slot(s, p);
     const Vec3 normal = c.normal, smooth = c.smooth;
     const double nn = normal.squaredNorm();
     const double along = nn > 0 ? (c.pull - smooth).dot(normal) / nn : 0.0;
@@ -301,7 +317,7 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
   // The projected corners' sums, one per slot: zero between calls (every
   // slot is cleared after its projection).
   if (cst_corner_sums_.size() != plan.corner.size()) cst_corner_sums_.assign(plan.corner.size(), CstCornerSums{});
-  CstCornerSums* sums = cst_corner_sums_.data();
+  const CornerSlots sums{plan.slot.data(), cst_corner_sums_.data()};
   const Cst* csts = model_.csts.awake_begin();  // awake only
   const std::uint32_t n_csts = std::uint32_t(model_.csts.awake_end() - csts);
   if (!elements_on_threads()) {
@@ -331,7 +347,6 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
 void Solver::prepare_cst_chunks() const {
   if (!cst_plan_.current(model_)) cst_plan_.derive(model_);
   const CstPlan& plan = cst_plan_;
-  if (cst_corner_sums_.size() != plan.corner.size()) cst_corner_sums_.assign(plan.corner.size(), CstCornerSums{});
   const std::vector<ParticleId>& bound = chunk_bounds();
   if (!cst_chunk_shares_.current(model_, bound))
     cst_chunk_shares_.derive(model_, bound, std::uint32_t(plan.i.size()), [&](std::uint32_t e, ParticleId* at) {
@@ -346,6 +361,14 @@ void Solver::prepare_cst_chunks() const {
                                 });
 }
 
+namespace {
+// Each thread's projected corners' sums of the chunk it is evaluating, a
+// row per particle of the chunk, zero between chunks (each row is cleared
+// once projected). A chunk's rows stay in the cache; the model's slots
+// streamed from memory at 100K particles.
+thread_local std::vector<CstCornerSums> chunk_corner_scratch;
+}  // namespace
+
 // A chunk's triangles into its sums, as the element pass adds them into F
 // and S (per particle the model's order of its triangles, then its
 // projected corner), each lane on its own.
@@ -355,7 +378,8 @@ void Solver::chunk_cst_sums(std::uint32_t chunk, const Vec3* x, ForceSum* sums) 
   const Owned<true> own{base, base + (ParticleId(1) << shift)};
   const ChunkSink out{sums, base};
   const ElementShares &tri = cst_chunk_shares_, &corners = corner_chunk_shares_;
-  CstCornerSums* corner_sums = cst_corner_sums_.data();
+  if (chunk_corner_scratch.size() < (std::size_t(1) << shift)) chunk_corner_scratch.resize(std::size_t(1) << shift);
+  const CornerRows corner_sums{chunk_corner_scratch.data(), base};
   cst_forces<true>(cst_plan_, model_.csts.awake_begin(), tri.items.data() + tri.begin[chunk],
                    tri.begin[chunk + 1] - tri.begin[chunk], own, x, settings.geometric_factor, out, corner_sums);
   project_corners<true>(cst_plan_, corners.items.data() + corners.begin[chunk],
