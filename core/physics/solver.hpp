@@ -420,8 +420,9 @@ class Solver {
   std::vector<Vec3> Ts_, ws_;       // stage torques, angular velocities
   std::vector<double> Ks_;          // stage rotational stiffnesses (unused but written)
   std::vector<Vec3> sum_r_, sum_w_;  // RK4's sums of L_R and K_R (eq. 3.22-3.24)
-  // cst_forces.cpp: the triangles as the step reads them, and the sums of
-  // the projected corners, one per slot (scratch, zero between calls).
+  // cst_forces.cpp: the triangles as the step reads them, and the element
+  // pass's sums of the projected corners, one per slot (scratch, zero
+  // between calls; the fused step sums a chunk's in a scratch of its own).
   mutable CstPlan cst_plan_;
   mutable std::vector<CstCornerSums> cst_corner_sums_;
   // The oriented quads of every patch under pressure, with their pressure,
