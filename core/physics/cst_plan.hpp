@@ -2,10 +2,11 @@
 // The CST step's lean copy of the awake triangles (DESIGN principle 1: a
 // derived cache, like BarChunks): structure of arrays holding what the
 // form-finding force reads, and the corners whose pull is projected onto
-// their normal, each given a slot so that its sums sit together and in
-// one compact array. Derived again whenever the model's revision or
-// capacity moved (every change of a triangle, its membrane or a
-// particle's passivity moves the revision).
+// their normal, each given a slot so that the element pass's sums sit
+// together and in one compact array (the fused step sums a chunk's corners
+// in rows by particle, cst_forces.cpp). Derived again whenever the
+// model's revision or capacity moved (every change of a triangle, its
+// membrane or a particle's passivity moves the revision).
 #include <cstdint>
 #include <vector>
 
