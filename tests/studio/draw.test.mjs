@@ -132,7 +132,11 @@ await run('draw: a dense net', scene('bench/studio_net.lua'), ['--param', 'parti
   check(waiting.unknown.every((c, i) => Math.abs(c - shown.simple[i]) <= 2),
         `nor is a topology of particles not seen before drawn without its frame (${waiting.unknown})`);
   await away(1 / 3);
-  const close = await until(page, () => studio.view.points.visible && !studio.view.dots.visible && { edge: studio.view.edgePixels, bars: studio.view.patchBars.visible });
+  // Once the page has derived the view for the new camera (edgePixels
+  // moved from the far value): before that, the last render's view is read.
+  const close = await until(page, (far) => studio.view.edgePixels !== far && studio.view.points.visible &&
+                                           !studio.view.dots.visible &&
+                                           { edge: studio.view.edgePixels, bars: studio.view.patchBars.visible }, dense.edge);
   check(close.edge >= 6 && close.bars, `close up (edges ${close.edge.toFixed(1)} px) every particle is a dot again and the bars are drawn`);
   check(page.problems.length === 0, 'no error on the page: ' + page.problems.join('; '));
 });
