@@ -35,7 +35,10 @@ struct BarChunks {
     std::uint32_t inbox_begin = 0, inbox_end = 0;                  // into inbox_*
     std::uint32_t first_source = 0;  // the smallest chunk with a bar into this one's inbox (else itself)
     bool cables = false;             // a bar of it is tension only (else the step never reads `cable`)
+    std::uint32_t block_begin = 0;   // into `same`: its first block's
   };
+  // The step takes a chunk's bars in blocks of this many (forces.cpp).
+  static constexpr std::uint32_t kBlock = 64;
 
   // The number of particles per chunk for a model of this capacity: a power
   // of two from 1024 to 16384, about capacity / 16.
@@ -55,6 +58,11 @@ struct BarChunks {
   std::vector<ParticleId> i, j;
   std::vector<double> k, rest, prestress;
   std::vector<std::uint64_t> cable;
+  // Per block of kBlock bars of a chunk: 1 where its bars share k, rest
+  // length, prestress and cable flag bit for bit (a net or member of equal
+  // bars), so that the step reads the first bar's and streams none of the
+  // others' (stop 45).
+  std::vector<std::uint8_t> same;
   std::vector<ParticleId> inbox_particle;
   std::vector<std::uint32_t> inbox_slot;
   // Scratch written by a pass: the force (on i; j takes minus it) and the

@@ -37,7 +37,7 @@ namespace {
 // default geometric factor 1, g T / L is that same quotient (1 * T is T); a
 // bar of no positive length (coincident or non-finite ends) gets a zero
 // force, which adds nothing (scatter_bars).
-constexpr std::uint32_t kBarBlock = 64;
+constexpr std::uint32_t kBarBlock = BarChunks::kBlock;
 
 struct BarBlock {
   alignas(64) double dx[kBarBlock], dy[kBarBlock], dz[kBarBlock];
@@ -46,24 +46,34 @@ struct BarBlock {
 
 // Eq. 3.32 (no tension in a slack cable), eq. 3.33's T / L and eq. 3.35,
 // in three copies (simd_clones.hpp). Without cables (kCables false: none in
-// the chunk) T is T0 and the cable column is not streamed.
-template <bool kUnitFactor, bool kCables>
+// the chunk) T is T0 and the cable column is not streamed. A block of bars
+// that share their constants (kSame, BarChunks::same) reads the first's.
+template <bool kUnitFactor, bool kCables, bool kSame>
 TENDRIL_SIMD_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* __restrict k,
                                    const double* __restrict rest, const double* __restrict pre,
                                    const std::uint64_t* __restrict cable, double gf) {
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
+    const std::uint32_t at = kSame ? 0 : m;
     const double dx = b.dx[m], dy = b.dy[m], dz = b.dz[m];
     const double L = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const double T0 = pre[m] + k[m] * (L - rest[m]);
-    const double T = kCables && cable[m] && T0 < 0 ? 0.0 : T0;
+    const double T0 = pre[at] + k[at] * (L - rest[at]);
+    const double T = kCables && cable[at] && T0 < 0 ? 0.0 : T0;
     const double c = T / L;
     const double g = kUnitFactor ? c : gf * T / L;
-    b.s[m] = k[m] + (L > 0 && T > 0 ? g : 0.0);
+    b.s[m] = k[at] + (L > 0 && T > 0 ? g : 0.0);
     b.fx[m] = L > 0 ? c * dx : 0.0;
     b.fy[m] = L > 0 ? c * dy : 0.0;
     b.fz[m] = L > 0 ? c * dz : 0.0;
   }
+}
+
+// bar_block's copy for the geometric factor (1: T / L once).
+template <bool kCables, bool kSame>
+inline void bar_block_for(bool unit_factor, BarBlock& b, std::uint32_t n, const double* k, const double* rest,
+                          const double* pre, const std::uint64_t* cable, double gf) {
+  if (unit_factor) bar_block<true, kCables, kSame>(b, n, k, rest, pre, cable, gf);
+  else bar_block<false, kCables, kSame>(b, n, k, rest, pre, cable, gf);
 }
 
 // Spline-beam hinges the same way (eq. 3.41-3.43): the three chords
@@ -74,7 +84,7 @@ TENDRIL_SIMD_CLONES void bar_block(BarBlock& b, std::uint32_t n, const double* _
 // gets +0 forces, as hinge_forces returns. Four divisions a hinge (the
 // reciprocals of both links, of |a x b| and the curvature's), not twelve:
 // the loop waited on the divider (stop 38, docs/performance.md).
-constexpr std::uint32_t kHingeBlock = 64;
+constexpr std::uint32_t kHingeBlock = HingeChunks::kBlock;
 
 struct HingeBlock {
   alignas(64) double ax[kHingeBlock], ay[kHingeBlock], az[kHingeBlock];
@@ -86,13 +96,16 @@ struct HingeBlock {
 };
 
 // EI and rest curvature are read from `stiffness` and `curvature` (the
-// block's own copies, or the chunk's columns in place).
+// block's own copies, or the chunk's columns in place; kSame: a block of
+// hinges that share them, HingeChunks::same, reads the first's).
+template <bool kSame>
 TENDRIL_SIMD_CLONES void hinge_block(HingeBlock& h, const double* __restrict stiffness,
                                      const double* __restrict curvature, std::uint32_t n) {
 #pragma omp simd
   for (std::uint32_t m = 0; m < n; ++m) {
+    const std::uint32_t at = kSame ? 0 : m;
     const double ax = h.ax[m], ay = h.ay[m], az = h.az[m], bx = h.bx[m], by = h.by[m], bz = h.bz[m];
-    const double cx = h.cx[m], cy = h.cy[m], cz = h.cz[m], EI = stiffness[m];
+    const double cx = h.cx[m], cy = h.cy[m], cz = h.cz[m], EI = stiffness[at];
     const double La = std::sqrt(ax * ax + ay * ay + az * az), Lb = std::sqrt(bx * bx + by * by + bz * bz),
                  Lc = std::sqrt(cx * cx + cy * cy + cz * cz);
     const double inv_La = 1.0 / La, inv_Lb = 1.0 / Lb;
@@ -101,7 +114,7 @@ TENDRIL_SIMD_CLONES void hinge_block(HingeBlock& h, const double* __restrict sti
     const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;  // a x b
     const double nn = std::sqrt(nx * nx + ny * ny + nz * nz);
     const bool bends = !(nn <= 0 || Lc <= 0);
-    const double M = EI * (hinge_curvature(nn, inv_La, inv_Lb, Lc) - curvature[m]);
+    const double M = EI * (hinge_curvature(nn, inv_La, inv_Lb, Lc) - curvature[at]);
     // a x nrm and b x nrm, of norms La |nrm| and Lb |nrm|
     const double ux = ay * nz - az * ny, uy = az * nx - ax * nz, uz = ax * ny - ay * nx;
     const double vx = by * nz - bz * ny, vy = bz * nx - bx * nz, vz = bx * ny - by * nx;
@@ -242,7 +255,7 @@ std::uint32_t hinge_forces(const Hinge* hinges, const std::uint32_t* items, std:
       hb.EI[m] = h.EI;
       hb.rest[m] = h.rest_curvature;
     }
-    hinge_block(hb, hb.EI, hb.rest, n);
+    hinge_block<false>(hb, hb.EI, hb.rest, n);
     for (std::uint32_t m = 0; m < n; ++m) {
       const std::uint32_t e = kShared ? items[e0 + m] : e0 + m;
       const Hinge& h = hinges[e];
@@ -495,12 +508,13 @@ TENDRIL_SIMD_CLONES ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const 
     }
     const double *k = B.k.data() + e0, *rest = B.rest.data() + e0, *pre = B.prestress.data() + e0;
     const std::uint64_t* cable = B.cable.data() + e0;
+    const bool same = B.same[c.block_begin + (e0 - c.bars_begin) / kBarBlock];
     if (c.cables) {
-      if (unit_factor) bar_block<true, true>(b, n, k, rest, pre, cable, gf);
-      else bar_block<false, true>(b, n, k, rest, pre, cable, gf);
+      if (same) bar_block_for<true, true>(unit_factor, b, n, k, rest, pre, cable, gf);
+      else bar_block_for<true, false>(unit_factor, b, n, k, rest, pre, cable, gf);
     } else {
-      if (unit_factor) bar_block<true, false>(b, n, k, rest, pre, cable, gf);
-      else bar_block<false, false>(b, n, k, rest, pre, cable, gf);
+      if (same) bar_block_for<false, true>(unit_factor, b, n, k, rest, pre, cable, gf);
+      else bar_block_for<false, false>(unit_factor, b, n, k, rest, pre, cable, gf);
     }
     // The block's interior bars [0, interior), then its crossing ones.
     const std::uint32_t interior = std::clamp(c.crossing_begin, e0, e0 + n) - e0;
@@ -558,7 +572,10 @@ TENDRIL_SIMD_CLONES std::uint32_t Solver::chunk_hinge_sums(std::uint32_t chunk, 
       hb.bx[m] = b.x(), hb.by[m] = b.y(), hb.bz[m] = b.z();
       hb.cx[m] = c.x(), hb.cy[m] = c.y(), hb.cz[m] = c.z();
     }
-    hinge_block(hb, H.EI.data() + e0, H.rest.data() + e0, n);
+    if (H.same[H.block_begin[chunk] + (e0 - first) / kHingeBlock])
+      hinge_block<true>(hb, H.EI.data() + e0, H.rest.data() + e0, n);
+    else
+      hinge_block<false>(hb, H.EI.data() + e0, H.rest.data() + e0, n);
     const std::uint32_t done = scatter_hinges(hb, n, hi + e0, hj + e0, hk + e0, own, sums);
     if (done < n) [[unlikely]]
       return H.hinge[e0 + done];

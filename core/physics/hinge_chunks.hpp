@@ -29,6 +29,13 @@ struct HingeChunks {
   std::vector<std::uint32_t> hinge;  // per item: its index among the awake hinges
   std::vector<ParticleId> i, j, k;
   std::vector<double> EI, rest;
+  // The step takes a chunk's hinges in blocks of this many (forces.cpp);
+  // per block, 1 where its hinges share EI and rest curvature bit for bit
+  // (a beam of one section, straight at rest), so that the step reads the
+  // first hinge's (stop 45). Chunk c's first block is block_begin[c].
+  static constexpr std::uint32_t kBlock = 64;
+  std::vector<std::uint32_t> block_begin;
+  std::vector<std::uint8_t> same;
 
  private:
   const Model* model_ = nullptr;

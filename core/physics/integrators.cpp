@@ -612,14 +612,29 @@ double Solver::fused_step_bytes() const {
   // written, in one pass the new position written.
   const double kick = particles * (4 + 24 + (masses ? 16 : 0) + 24 + 8 + 1 + 24 + 24 + 24 + (one_pass ? 24 : 0));
   // Per bar its ends, k, rest length, prestress, and its cable flag in a
-  // chunk with cables; per crossing bar its slot written, then read through
-  // the inbox (particle, slot).
-  double flagged = 0;
+  // chunk with cables (a block of bars that share them: the first's); per
+  // crossing bar its slot written, then read through the inbox (particle,
+  // slot).
+  double constants = 0;
   for (const BarChunks::Chunk& c : B.chunks)
-    if (c.cables) flagged += c.bars_end - c.bars_begin;
-  const double elements = bars * (4 + 4 + 8 + 8 + 8) + flagged * 8 + crossing * (24 + 8 + 4 + 4 + 24 + 8);
-  // Per hinge of a chunk its ends, EI and rest curvature (hinge_chunks.hpp).
-  const double hinges = model_.hinges.awake > 0 ? double(hinge_chunks().i.size()) * (4 + 4 + 4 + 8 + 8) : 0.0;
+    for (std::uint32_t e0 = c.bars_begin; e0 < c.bars_end; e0 += BarChunks::kBlock) {
+      const double n = std::min(BarChunks::kBlock, c.bars_end - e0), per_bar = c.cables ? 32 : 24;
+      constants += (B.same[c.block_begin + (e0 - c.bars_begin) / BarChunks::kBlock] ? 1 : n) * per_bar;
+    }
+  const double elements = bars * (4 + 4) + constants + crossing * (24 + 8 + 4 + 4 + 24 + 8);
+  // Per hinge of a chunk its ends, EI and rest curvature (hinge_chunks.hpp;
+  // a block of hinges that share them: the first's).
+  double hinges = 0;
+  if (model_.hinges.awake > 0) {
+    const HingeChunks& H = hinge_chunks();
+    hinges = double(H.i.size()) * (4 + 4 + 4);
+    for (std::size_t c = 0; c + 1 < H.begin.size(); ++c)
+      for (std::uint32_t e0 = H.begin[c]; e0 < H.begin[c + 1]; e0 += HingeChunks::kBlock)
+        hinges += (H.same[H.block_begin[c] + (e0 - H.begin[c]) / HingeChunks::kBlock]
+                       ? 1.0
+                       : double(std::min(HingeChunks::kBlock, H.begin[c + 1] - e0))) *
+                  16;
+  }
   // Per triangle of a chunk its index and the plan's ends, stresses,
   // G-string density, flags and slots; per projected corner its index,
   // particle, flag and sums read and cleared (cst_plan.hpp).
