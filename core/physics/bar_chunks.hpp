@@ -63,6 +63,8 @@ struct BarChunks {
   // bars), so that the step reads the first bar's and streams none of the
   // others' (stop 45).
   std::vector<std::uint8_t> same;
+  // Whether chunk c's block starting at bar e0 is one of those.
+  bool same_block(const Chunk& c, std::uint32_t e0) const { return same[c.block_begin + (e0 - c.bars_begin) / kBlock]; }
   std::vector<ParticleId> inbox_particle;
   std::vector<std::uint32_t> inbox_slot;
   // Scratch written by a pass: the force (on i; j takes minus it) and the

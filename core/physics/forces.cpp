@@ -508,7 +508,7 @@ TENDRIL_SIMD_CLONES ForceSum* Solver::chunk_bar_sums(std::uint32_t chunk, const 
     }
     const double *k = B.k.data() + e0, *rest = B.rest.data() + e0, *pre = B.prestress.data() + e0;
     const std::uint64_t* cable = B.cable.data() + e0;
-    const bool same = B.same[c.block_begin + (e0 - c.bars_begin) / kBarBlock];
+    const bool same = B.same_block(c, e0);
     if (c.cables) {
       if (same) bar_block_for<true, true>(unit_factor, b, n, k, rest, pre, cable, gf);
       else bar_block_for<true, false>(unit_factor, b, n, k, rest, pre, cable, gf);
@@ -572,7 +572,7 @@ TENDRIL_SIMD_CLONES std::uint32_t Solver::chunk_hinge_sums(std::uint32_t chunk, 
       hb.bx[m] = b.x(), hb.by[m] = b.y(), hb.bz[m] = b.z();
       hb.cx[m] = c.x(), hb.cy[m] = c.y(), hb.cz[m] = c.z();
     }
-    if (H.same[H.block_begin[chunk] + (e0 - first) / kHingeBlock])
+    if (H.same_block(chunk, e0))
       hinge_block<true>(hb, H.EI.data() + e0, H.rest.data() + e0, n);
     else
       hinge_block<false>(hb, H.EI.data() + e0, H.rest.data() + e0, n);

@@ -36,6 +36,9 @@ struct HingeChunks {
   static constexpr std::uint32_t kBlock = 64;
   std::vector<std::uint32_t> block_begin;
   std::vector<std::uint8_t> same;
+  bool same_block(std::uint32_t chunk, std::uint32_t e0) const {
+    return same[block_begin[chunk] + (e0 - begin[chunk]) / kBlock];
+  }
 
  private:
   const Model* model_ = nullptr;

@@ -619,7 +619,7 @@ double Solver::fused_step_bytes() const {
   for (const BarChunks::Chunk& c : B.chunks)
     for (std::uint32_t e0 = c.bars_begin; e0 < c.bars_end; e0 += BarChunks::kBlock) {
       const double n = std::min(BarChunks::kBlock, c.bars_end - e0), per_bar = c.cables ? 32 : 24;
-      constants += (B.same[c.block_begin + (e0 - c.bars_begin) / BarChunks::kBlock] ? 1 : n) * per_bar;
+      constants += (B.same_block(c, e0) ? 1 : n) * per_bar;
     }
   const double elements = bars * (4 + 4) + constants + crossing * (24 + 8 + 4 + 4 + 24 + 8);
   // Per hinge of a chunk its ends, EI and rest curvature (hinge_chunks.hpp;
@@ -630,10 +630,7 @@ double Solver::fused_step_bytes() const {
     hinges = double(H.i.size()) * (4 + 4 + 4);
     for (std::size_t c = 0; c + 1 < H.begin.size(); ++c)
       for (std::uint32_t e0 = H.begin[c]; e0 < H.begin[c + 1]; e0 += HingeChunks::kBlock)
-        hinges += (H.same[H.block_begin[c] + (e0 - H.begin[c]) / HingeChunks::kBlock]
-                       ? 1.0
-                       : double(std::min(HingeChunks::kBlock, H.begin[c + 1] - e0))) *
-                  16;
+        hinges += 16 * (H.same_block(std::uint32_t(c), e0) ? 1.0 : std::min(HingeChunks::kBlock, H.begin[c + 1] - e0));
   }
   // Per triangle of a chunk its index and the plan's ends, stresses,
   // G-string density, flags and slots; per projected corner its index,
