@@ -1,7 +1,8 @@
 #include "physics/bar_chunks.hpp"
 
 #include <algorithm>
-#include <bit>
+
+#include "physics/equal_blocks.hpp"
 
 namespace tendril {
 
@@ -64,18 +65,13 @@ void BarChunks::derive(const Model& m) {
     chunks[c].cables |= b.tension_only;
   }
   // Blocks whose bars share their constants, bit for bit.
-  auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
   same.clear();
   for (Chunk& ch : chunks) {
     ch.block_begin = std::uint32_t(same.size());
-    for (std::uint32_t e0 = ch.bars_begin; e0 < ch.bars_end; e0 += kBlock) {
-      const std::uint32_t end = std::min(e0 + kBlock, ch.bars_end);
-      bool all = true;
-      for (std::uint32_t e = e0 + 1; e < end && all; ++e)
-        all = bits(k[e]) == bits(k[e0]) && bits(rest[e]) == bits(rest[e0]) &&
-              bits(prestress[e]) == bits(prestress[e0]) && cable[e] == cable[e0];
-      same.push_back(all ? 1 : 0);
-    }
+    mark_equal_blocks(ch.bars_begin, ch.bars_end, kBlock, [&](std::uint32_t e, std::uint32_t f) {
+      return same_bits(k[e], k[f]) && same_bits(rest[e], rest[f]) && same_bits(prestress[e], prestress[f]) &&
+             cable[e] == cable[f];
+    }, same);
   }
   // Inboxes: the crossing bars by the chunk of j, in slot order.
   std::vector<std::uint32_t> in(n_chunks + 1, 0);

@@ -1,7 +1,6 @@
 #include "physics/hinge_chunks.hpp"
 
-#include <algorithm>
-#include <bit>
+#include "physics/equal_blocks.hpp"
 
 namespace tendril {
 
@@ -48,20 +47,14 @@ void HingeChunks::derive(const Model& m, std::uint32_t shift, std::size_t n_chun
       rest[at] = h.rest_curvature;
     }
   }
-  auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
-  block_begin.assign(n_chunks + 1, 0);
+  block_begin.assign(n_chunks, 0);
   same.clear();
   for (std::size_t c = 0; c < n_chunks; ++c) {
     block_begin[c] = std::uint32_t(same.size());
-    for (std::uint32_t e0 = begin[c]; e0 < begin[c + 1]; e0 += kBlock) {
-      const std::uint32_t end = std::min(e0 + kBlock, begin[c + 1]);
-      bool all = true;
-      for (std::uint32_t e = e0 + 1; e < end && all; ++e)
-        all = bits(EI[e]) == bits(EI[e0]) && bits(rest[e]) == bits(rest[e0]);
-      same.push_back(all ? 1 : 0);
-    }
+    mark_equal_blocks(begin[c], begin[c + 1], kBlock, [&](std::uint32_t e, std::uint32_t f) {
+      return same_bits(EI[e], EI[f]) && same_bits(rest[e], rest[f]);
+    }, same);
   }
-  block_begin[n_chunks] = std::uint32_t(same.size());
   model_ = &m;
   revision_ = m.revision;
   capacity_ = m.particles.capacity();
