@@ -22,7 +22,7 @@ const char* const kExitStatuses =
 
 std::string version_text() {
   return std::string("tendril ") + TENDRIL_VERSION + " (" + LUA_RELEASE + ", CLI11 " + CLI11_VERSION +
-         (started_with_huge_pages() ? std::string(", ") + kHugePagesTunable : std::string()) + ")";
+         (started_with_huge_pages() ? std::string(", ") + kMemoryTunables : std::string()) + ")";
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ void restart_with_huge_pages(char** argv) {
   if (const char* wish = std::getenv("TENDRIL_HUGE_PAGES"); wish && std::strcmp(wish, "0") == 0) return;
   if (contains(std::getenv("LD_PRELOAD"), "vgpreload")) return;
   const std::optional<std::string> before = tunables ? std::optional<std::string>(tunables) : std::nullopt;
-  const std::string value = before && !before->empty() ? *before + ":" + kHugePagesTunable : kHugePagesTunable;
+  const std::string value = before && !before->empty() ? *before + ":" + kMemoryTunables : kMemoryTunables;
   if (setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0) return;
   execv("/proc/self/exe", argv);
   // Still here: the exec failed (no /proc, say); go on as started.
@@ -29,6 +29,6 @@ void restart_with_huge_pages(char** argv) {
   else unsetenv("GLIBC_TUNABLES");
 }
 
-bool started_with_huge_pages() { return contains(std::getenv("GLIBC_TUNABLES"), kHugePagesTunable); }
+bool started_with_huge_pages() { return contains(std::getenv("GLIBC_TUNABLES"), kMemoryTunables); }
 
 }  // namespace tendril
