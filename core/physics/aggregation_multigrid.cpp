@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 namespace tendril {
 
@@ -170,7 +171,12 @@ RowsD smoothed_prolongator(const RowsD& A, const Eigen::VectorXd& diagonal, cons
 // One Gauss-Seidel sweep on rows sorted by column, each row's diagonal at
 // diagonal_at[i]: the entries left of it, then those right of it, in the
 // row's order. From x = 0 (`from_zero`, a forward sweep) the right ones
-// multiply zeros and are left out, which changes no sum.
+// multiply zeros and are left out, which changes no sum. The row just
+// relaxed is usually the neighbour next to the diagonal (i - 1 going
+// forward, i + 1 back): its value is taken from the register that holds
+// it, not loaded back from the store just made, which would put the
+// store's forwarding on the sweep's chain of dependent rows (the same
+// products in the same order).
 template <class Matrix, class Vector>
 void gauss_seidel(const Matrix& A, const std::vector<int>& diagonal_at, const Vector& inverse_diagonal,
                   const Vector& b, Vector& x, bool forward, bool from_zero = false) {
@@ -178,17 +184,40 @@ void gauss_seidel(const Matrix& A, const std::vector<int>& diagonal_at, const Ve
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
   const auto* value = A.valuePtr();
-  auto relax = [&](int i) {
-    auto s = b[i];
-    for (int k = outer[i], d = diagonal_at[std::size_t(i)]; k < d; ++k) s -= value[k] * x[inner[k]];
-    if (!from_zero)
-      for (int k = diagonal_at[std::size_t(i)] + 1; k < outer[i + 1]; ++k) s -= value[k] * x[inner[k]];
-    x[i] = s * inverse_diagonal[i];
-  };
-  if (forward)
-    for (int i = 0; i < n; ++i) relax(i);
-  else
-    for (int i = n - 1; i >= 0; --i) relax(i);
+  using Scalar = std::remove_cvref_t<decltype(b[0])>;
+  if (forward) {
+    Scalar last = 0;
+    for (int i = 0; i < n; ++i) {
+      Scalar s = b[i];
+      const int d = diagonal_at[std::size_t(i)];
+      int k = outer[i];
+      for (; k + 1 < d; ++k) s -= value[k] * x[inner[k]];
+      if (k < d) {
+        if (inner[k] == i - 1) [[likely]] s -= value[k] * last;
+        else s -= value[k] * x[inner[k]];
+      }
+      if (!from_zero)
+        for (k = d + 1; k < outer[i + 1]; ++k) s -= value[k] * x[inner[k]];
+      last = s * inverse_diagonal[i];
+      x[i] = last;
+    }
+    return;
+  }
+  Scalar last = 0;
+  for (int i = n - 1; i >= 0; --i) {
+    Scalar s = b[i];
+    const int d = diagonal_at[std::size_t(i)], end = outer[i + 1];
+    for (int k = outer[i]; k < d; ++k) s -= value[k] * x[inner[k]];
+    int k = d + 1;
+    if (k < end) {
+      if (inner[k] == i + 1) [[likely]] s -= value[k] * last;
+      else s -= value[k] * x[inner[k]];
+      ++k;
+    }
+    for (; k < end; ++k) s -= value[k] * x[inner[k]];
+    last = s * inverse_diagonal[i];
+    x[i] = last;
+  }
 }
 
 // The whole symmetric matrix, by rows, from its lower triangle by columns:
