@@ -6,10 +6,13 @@
 // to the nodal load (1e-3: 1e-3 N), as Solver::run judges it. Per size: the
 // time (the thread's CPU time, and the wall time), the steps, the cost per
 // step and, for Newton, its linear-algebra work; then the exponent of a
-// least-squares fit t ~ n^p over the sizes that converged.
+// least-squares fit t ~ n^p over the sizes that converged. Each size is
+// solved --repeat times (default 3) and its median time counts: on a
+// shared machine one slow run of the smallest size moved p by 0.2.
 // Goal (issue 18): p <= 1.2, 160K particles in <= 2 s, 1M in <= 20 s.
 //
 //   bench_scaling [--sizes 10K,40K,160K,640K,1M] [--integrators newton,...] [--tolerance 1e-3] [--cap 120]
+//                 [--repeat 3]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -93,14 +96,15 @@ double fitted_exponent(const std::vector<double>& n, const std::vector<double>& 
 int usage(const char* argv0, int code) {
   std::fprintf(code ? stderr : stdout,
                "usage: %s [--sizes 10K,40K,160K,640K,1M] [--integrators newton,projective1,...] [--tolerance 1e-3]\n"
-               "          [--cap SECONDS] [--multigrid-rows ROWS]\n"
+               "          [--cap SECONDS] [--multigrid-rows ROWS] [--repeat N]\n"
                "  --sizes        particles (an s x s net, s = round(sqrt(size)))\n"
                "  --integrators  newton (default), auto (tendril's default: newton's steps here), newton_factors (no multigrid),\n"
                "                 leapfrog, projective (4 iterations per step,\n"
                "                 as before vie_iterations = 0 became the default), projective1 (one iteration per step)\n"
                "  --tolerance    residual relative to the nodal load of 1 N (default 1e-3)\n"
                "  --cap          wall-time limit of each run (default 120 s)\n"
-               "  --multigrid-rows  newton: axis blocks this large or larger take the multigrid cycle (default 4000)\n",
+               "  --multigrid-rows  newton: axis blocks this large or larger take the multigrid cycle (default 4000)\n"
+               "  --repeat       runs of each size, the median timed (default 3)\n",
                argv0);
   return code;
 }
@@ -111,6 +115,7 @@ int main(int argc, char** argv) {
   tendril::restart_with_huge_pages(argv);  // as tendril itself runs (io/huge_pages.hpp)
   std::vector<std::size_t> sizes{10000, 40000, 160000, 640000, 1000000};
   double tolerance = 1e-3, cap = 120;
+  int repeat = 3;
   std::vector<Variant> known{{"newton", Integrator::Newton, 4},
                                    {"auto", Integrator::Auto, 0},
                                    {"newton_factors", Integrator::Newton, 4, std::numeric_limits<int>::max()},
@@ -129,6 +134,7 @@ int main(int argc, char** argv) {
       if (a == "--sizes") sizes = parse_sizes(value());
       else if (a == "--tolerance") tolerance = std::stod(value());
       else if (a == "--cap") cap = std::stod(value());
+      else if (a == "--repeat") repeat = std::max(1, std::stoi(value()));
       else if (a == "--multigrid-rows") known[0].multigrid_rows = std::stoi(value());
       else if (a == "--integrators") chosen = value();
       else if (a == "-h" || a == "--help") return usage(argv[0], 0);
@@ -150,7 +156,9 @@ int main(int argc, char** argv) {
               "   ** WARNING: built without NDEBUG (not a Release build) **"
 #endif
   );
-  std::puts("  time: the thread's CPU time (the wall time beside it: the machine is shared)");
+  std::printf("  time: the thread's CPU time (the wall time beside it: the machine is shared), the median of %d\n"
+              "    runs of each size (cpu range: the fastest and slowest)\n",
+              repeat);
   std::printf("  newton: axis blocks of %d rows or more take the multigrid cycle, smaller ones their factors\n",
               NewtonSystem::multigrid_rows);
   std::puts("    (newton_factors: the factors at every size); preconditioners: the factorisations or hierarchies built");
@@ -158,21 +166,28 @@ int main(int argc, char** argv) {
   bool failed = false;
   for (const Variant& v : variants) {
     std::printf("%s\n", v.label.c_str());
-    Table table({"particles", "side", "cpu s", "wall s", "steps", "ms/step", "ns/particle-step", "preconditioners",
+    Table table({"particles", "side", "cpu s", "cpu range s", "wall s", "steps", "ms/step", "ns/particle-step", "preconditioners",
                  "CG iterations", "residual N", "note"});
     std::vector<double> ns, ts;
     std::string met160 = "not run", met1M = "not run";
     for (std::size_t size : sizes) {
       const int side = int(std::lround(std::sqrt(double(size))));
       const double n = double(side) * side;
-      const Outcome o = solve(side, v, tolerance * kLoad, cap);
+      std::vector<Outcome> runs;
+      for (int r = 0; r < repeat; ++r) {
+        runs.push_back(solve(side, v, tolerance * kLoad, cap));
+        if (!runs.back().error.empty() || !runs.back().converged) break;  // a failure is not timed again
+      }
+      std::sort(runs.begin(), runs.end(), [](const Outcome& a, const Outcome& b) { return a.cpu < b.cpu; });
+      const Outcome& o = runs[runs.size() / 2];
       std::string note = o.error.empty() ? (o.converged ? "" : "not converged (cap)") : "error: " + o.error.substr(0, 60);
       failed |= !o.error.empty();
       if (o.converged) ns.push_back(n), ts.push_back(o.cpu);
       if (size == 160000) met160 = o.converged && o.cpu <= 2 ? "met" : "missed";
       if (size == 1000000) met1M = o.converged && o.cpu <= 20 ? "met" : "missed";
       const bool newton = v.integrator == Integrator::Newton || v.integrator == Integrator::Auto;
-      table.add({fmt("%.0f", n), fmt("%d", side), fmt("%.3f", o.cpu), fmt("%.3f", o.wall),
+      table.add({fmt("%.0f", n), fmt("%d", side), fmt("%.3f", o.cpu),
+                 fmt("%.3f-%.3f", runs.front().cpu, runs.back().cpu), fmt("%.3f", o.wall),
                  fmt("%llu", (unsigned long long)o.steps), fmt("%.2f", 1e3 * o.cpu / double(std::max<std::uint64_t>(o.steps, 1))),
                  fmt("%.0f", 1e9 * o.cpu / double(std::max<std::uint64_t>(o.steps, 1)) / n),
                  newton ? fmt("%llu", (unsigned long long)o.work.factorizations) : "-",
