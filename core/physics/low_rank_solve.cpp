@@ -17,13 +17,10 @@ bool LowRankSolve::set(const Solve& B, Eigen::Index n, const std::vector<int>& r
   // rows); on rows B gained since they are zero.
   Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(n, k);
   Z.topLeftCorner(Z_.rows(), had) = Z_.leftCols(had);
-  Eigen::VectorXd e(n);
-  for (Eigen::Index c = had; c < k; ++c) {
-    e.setZero();
-    e[rows[std::size_t(c)]] = 1;
-    B(e);
-    Z.col(c) = e;
-  }
+  Eigen::MatrixXd e = Eigen::MatrixXd::Zero(n, k - had);  // the new rows' unit columns, solved at once
+  for (Eigen::Index c = had; c < k; ++c) e(rows[std::size_t(c)], c - had) = 1;
+  B(e);
+  Z.rightCols(k - had) = e;
   Z_ = std::move(Z);
   rows_ = rows;
   C_ = delta;
@@ -37,13 +34,15 @@ bool LowRankSolve::set(const Solve& B, Eigen::Index n, const std::vector<int>& r
   return std::isfinite(det) && det > 0 && K_.rcond() > 1e-10;
 }
 
-void LowRankSolve::solve(const Solve& B, Eigen::VectorXd& b) const {
+void LowRankSolve::solve(const Solve& B, Eigen::MatrixXd& b) const {
   B(b);
   if (rows_.empty()) return;
   yT_.resize(Eigen::Index(rows_.size()));
-  for (std::size_t r = 0; r < rows_.size(); ++r) yT_[Eigen::Index(r)] = b[rows_[r]];
-  const Eigen::VectorXd w = C_ * K_.solve(yT_);
-  b.noalias() -= Z_ * w;
+  for (Eigen::Index c = 0; c < b.cols(); ++c) {
+    for (std::size_t r = 0; r < rows_.size(); ++r) yT_[Eigen::Index(r)] = b(rows_[r], c);
+    const Eigen::VectorXd w = C_ * K_.solve(yT_);
+    b.col(c).noalias() -= Z_ * w;
+  }
 }
 
 }  // namespace tendril

@@ -24,7 +24,7 @@ namespace tendril {
 
 class LowRankSolve {
  public:
-  using Solve = std::function<void(Eigen::VectorXd&)>;  // b -> B^-1 b, in place
+  using Solve = std::function<void(Eigen::MatrixXd&)>;  // every column b -> B^-1 b, in place
   // Forgets every change: solves with B alone.
   void clear();
   // The change D is now `delta` (dense over `rows`, in their order) on the
@@ -33,8 +33,8 @@ class LowRankSolve {
   // det(B + D) / det(B), not positive: B + D is not positive definite (or
   // nearly not), so the caller refactors, which says why.
   bool set(const Solve& B, Eigen::Index n, const std::vector<int>& rows, const Eigen::MatrixXd& delta);
-  // b -> (B + D)^-1 b, in place.
-  void solve(const Solve& B, Eigen::VectorXd& b) const;
+  // Every column b -> (B + D)^-1 b, in place.
+  void solve(const Solve& B, Eigen::MatrixXd& b) const;
   const std::vector<int>& rows() const { return rows_; }
 
  private:

@@ -123,7 +123,7 @@ void ProjectiveSystem::factor_axis(Axis& s, int a) {
   const std::size_t n = std::size_t(std::max<Eigen::Index>(1, s.A.rows()));
   const std::size_t nnzL = std::size_t(s.factor.matrixL().nestedExpression().nonZeros());
   s.budget = std::clamp<std::size_t>(nnzL / n, 16, 256);
-  s.b.resize(s.A.rows());
+  s.b.resize(s.A.rows(), s.b.cols());
 }
 
 void ProjectiveSystem::factor(const Key& key, std::uint64_t revision, const Model& m, const Vec3* x,
@@ -233,7 +233,7 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
     for (std::size_t r = 0; r < fresh.size(); ++r)
       if (fresh[r] && !in[r]) s.changed.push_back(int(r));
     if (s.changed.size() > s.budget) return false;
-    s.b.resize(rows);
+    s.b.conservativeResize(rows, s.b.cols());
     if (low_rank) {
       const Eigen::Index k = Eigen::Index(s.changed.size());
       Eigen::MatrixXd C = Eigen::MatrixXd::Zero(k, k);
@@ -250,7 +250,7 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
       for (const auto& e : extra)
         if (place[std::size_t(e.row())] >= 0 && place[std::size_t(e.col())] >= 0)
           C(place[std::size_t(e.row())], place[std::size_t(e.col())]) += e.value();
-      if (!s.change.set([&s](Eigen::VectorXd& b) { s.base_solve(b); }, rows, s.changed, C)) return false;
+      if (!s.change.set([&s](Eigen::MatrixXd& b) { s.base_solve(b); }, rows, s.changed, C)) return false;
     } else {
       const std::vector<int> changed = s.changed;
       s.A = assemble(m, s.row, rows, reference_.data(), inv_dt2, diagonal);
@@ -264,26 +264,32 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
   return true;
 }
 
-void ProjectiveSystem::Axis::base_solve(Eigen::VectorXd& b) const {
+void ProjectiveSystem::Axis::base_solve(Eigen::MatrixXd& b) const {
   const Eigen::Index n0 = A.rows();
-  if (grown.size() == 0) {
-    b = factor.solve(b);
-    return;
-  }
-  Eigen::VectorXd head = factor.solve(b.head(n0));
-  b.head(n0) = head;
-  b.tail(grown.size()).array() /= grown.array();
+  solve_columns(factor, b.topRows(n0), scratch);
+  if (grown.size() > 0) b.bottomRows(grown.size()).array().colwise() /= grown.array();
 }
 
+// The axes that share a system (equal rows) are solved together, a column
+// each: one pass over the factor for x, y and z of a net without locks.
 void ProjectiveSystem::solve(const Model& m, Vec3* rhs) {
   const std::vector<ParticleId>& integrated = m.particles.integrated.raw();
   for (int a = 0; a < 3; ++a) {
+    bool done = false;  // with an axis before it
+    for (int b = 0; b < a; ++b) done |= axis_[b] == axis_[a];
+    if (done) continue;
     Axis& s = *axis_[a];
+    int axes[3], count = 0;
+    for (int b = a; b < 3; ++b)
+      if (axis_[b] == axis_[a]) axes[count++] = b;
+    if (s.b.cols() != count) s.b = Eigen::MatrixXd::Zero(s.b.rows(), count);
     const std::vector<int>& row = s.row;
     for (ParticleId p : integrated)
-      if (row[p] >= 0) s.b[row[p]] = rhs[p][a];
-    if (s.b.size() != 0) s.change.solve([&s](Eigen::VectorXd& b) { s.base_solve(b); }, s.b);
-    for (ParticleId p : integrated) rhs[p][a] = row[p] >= 0 ? s.b[row[p]] : 0.0;
+      if (row[p] >= 0)
+        for (int c = 0; c < count; ++c) s.b(row[p], c) = rhs[p][axes[c]];
+    if (s.b.size() != 0) s.change.solve([&s](Eigen::MatrixXd& b) { s.base_solve(b); }, s.b);
+    for (ParticleId p : integrated)
+      for (int c = 0; c < count; ++c) rhs[p][axes[c]] = row[p] >= 0 ? s.b(row[p], c) : 0.0;
   }
 }
 

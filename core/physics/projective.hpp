@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "physics/ldlt_columns.hpp"
 #include "physics/low_rank_solve.hpp"
 
 namespace tendril {
@@ -86,17 +87,18 @@ class ProjectiveSystem {
   bool low_rank = true;
 
  private:
-  using Factor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
+  using Factor = LdltFactor;
   struct Axis {  // the system of one axis; axes with equal rows share one
     std::vector<int> row;          // particle -> row, or -1 (fixed)
     Eigen::SparseMatrix<double> A;  // what `factor` factors
     Factor factor;
     Eigen::VectorXd grown;         // rows added since factor(): their diagonal
     LowRankSolve change;           // diag(A, grown) + change: the current matrix
-    void base_solve(Eigen::VectorXd& b) const;  // diag(A, grown)^-1 b
+    void base_solve(Eigen::MatrixXd& b) const;  // diag(A, grown)^-1 b, every column
     std::vector<int> changed;      // rows changed since factor(), in order
     std::size_t budget = 0;        // how many may before factor() pays
-    Eigen::VectorXd b;
+    Eigen::MatrixXd b;                 // a column per axis that shares it
+    mutable RowsOfColumns scratch;     // solve_columns'
   };
   template <class Add>  // every matrix entry's terms, in a fixed order, through add(row, column, value)
   void terms(const Model& m, const std::vector<int>& row, const Vec3* x, double inv_dt2,

@@ -1,0 +1,22 @@
+#pragma once
+// Solves with a sparse LDL^T factor for several right-hand sides in one pass
+// over the factor: what Eigen's SimplicialLDLT::solve does column by column,
+// the same operations in the same order (so the same numbers bit for bit),
+// but each entry of L read once for all the columns, not once a column. The
+// triangular solves stream L and stall on its scattered rows; three columns
+// cost little more than one. The projective global step solves its x, y and
+// z with one factor, and a change's correction its new unit columns
+// (projective.hpp, low_rank_solve.hpp).
+#include <Eigen/SparseCholesky>
+
+namespace tendril {
+
+using LdltFactor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
+using RowsOfColumns = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// X <- A^-1 X, A the matrix f factored (successfully); `scratch` holds X's
+// rows permuted (kept by the caller, so that a solve allocates nothing once
+// it has been sized).
+void solve_columns(const LdltFactor& f, Eigen::Ref<Eigen::MatrixXd> X, RowsOfColumns& scratch);
+
+}  // namespace tendril
