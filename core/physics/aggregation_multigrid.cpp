@@ -208,7 +208,7 @@ void gauss_seidel(const Matrix& A, const std::vector<int>& diagonal_at, const Ve
     Scalar s = b[i];
     const int d = diagonal_at[std::size_t(i)], end = outer[i + 1];
     for (int k = outer[i]; k < d; ++k) s -= value[k] * x[inner[k]];
-    int k = d + 1;
+    int k = from_zero ? end : d + 1;
     if (k < end) {
       if (inner[k] == i + 1) [[likely]] s -= value[k] * last;
       else s -= value[k] * x[inner[k]];

@@ -4,7 +4,7 @@
 // changed, a particle's mass, a new particle's row): D = U C U^T, U the
 // columns of the identity at T, C = D[T, T] (dense, k x k, any sign), and
 //   (B + U C U^T)^-1 b = y - Z C (I + S C)^-1 y_T,   y = B^-1 b,
-//   Z = B^-1 U (k solves, once per new row), S = U^T Z = Z[T, :]
+//   Z = B^-1 U (a solve per new row, once; the new rows' together), S = Z[T, :]
 // (Sherman-Morrison-Woodbury without C^-1, so a singular C - one bar's
 // w (e_i - e_j)(e_i - e_j)^T - is fine). Exact up to rounding: the same
 // solution as a fresh factorisation of B + D, at the price of one solve per
