@@ -5,39 +5,48 @@
 
 namespace tendril {
 
-void solve_columns(const LdltFactor& f, Eigen::Ref<Eigen::MatrixXd> X, RowsOfColumns& scratch) {
+namespace {
+
+// Past the diagonal in column i of L (Eigen skips the entries above it,
+// then the diagonal's, and takes the rest as stored).
+int below(const Eigen::SparseMatrix<double>& L, Eigen::Index i) {
+  const int* outer = L.outerIndexPtr();
+  const int* inner = L.innerIndexPtr();
+  int k = outer[i];
+  const int end = outer[i + 1];
+  while (k < end && inner[k] < i) ++k;
+  if (k < end && inner[k] == i) ++k;
+  return k;
+}
+
+}  // namespace
+
+void forward_columns(const LdltFactor& f, const Eigen::Ref<const Eigen::MatrixXd>& X, RowsOfColumns& Y) {
   const Eigen::Index n = X.rows(), m = X.cols();
-  if (n == 0 || m == 0) return;
-  RowsOfColumns& Y = scratch;
   if (f.permutationP().size() > 0) Y = f.permutationP() * X;
   else Y = X;
   const Eigen::SparseMatrix<double>& L = f.matrixL().nestedExpression();  // unit lower, by columns
+  if (n == 0 || m == 0 || L.nonZeros() == 0) return;
   const int* outer = L.outerIndexPtr();
   const int* inner = L.innerIndexPtr();
   const double* value = L.valuePtr();
-  // Past the diagonal in column i (Eigen skips the entries above it, then
-  // the diagonal's, and takes the rest as stored).
-  auto below = [&](Eigen::Index i) {
-    int k = outer[i];
-    const int end = outer[i + 1];
-    while (k < end && inner[k] < i) ++k;
-    if (k < end && inner[k] == i) ++k;
-    return k;
-  };
-  const bool has_L = L.nonZeros() > 0;
-  if (has_L)  // L y = P b, by columns: a zero entry's column is skipped, as Eigen skips it
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const double* yi = Y.row(i).data();
-      bool any = false;
-      for (Eigen::Index c = 0; c < m; ++c) any |= yi[c] != 0.0;
-      if (!any) continue;  // a unit column's rows before its one: L's column is not read
-      for (int k = below(i), end = outer[i + 1]; k < end; ++k) {
-        double* yr = Y.row(inner[k]).data();
-        const double v = value[k];
-        for (Eigen::Index c = 0; c < m; ++c)
-          if (yi[c] != 0.0) yr[c] -= yi[c] * v;
-      }
+  // L y = P b, by columns: a zero entry's column is skipped, as Eigen skips it
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double* yi = Y.row(i).data();
+    bool any = false;
+    for (Eigen::Index c = 0; c < m; ++c) any |= yi[c] != 0.0;
+    if (!any) continue;  // a unit column's rows before its one: L's column is not read
+    for (int k = below(L, i), end = outer[i + 1]; k < end; ++k) {
+      double* yr = Y.row(inner[k]).data();
+      const double v = value[k];
+      for (Eigen::Index c = 0; c < m; ++c)
+        if (yi[c] != 0.0) yr[c] -= yi[c] * v;
     }
+  }
+}
+
+void backward_columns(const LdltFactor& f, RowsOfColumns& Y, Eigen::Ref<Eigen::MatrixXd> X) {
+  const Eigen::Index n = Y.rows(), m = Y.cols();
   const Eigen::VectorXd& D = f.vectorD();
   if (D.size() > 0)
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -45,17 +54,28 @@ void solve_columns(const LdltFactor& f, Eigen::Ref<Eigen::MatrixXd> X, RowsOfCol
       double* yi = Y.row(i).data();
       for (Eigen::Index c = 0; c < m; ++c) yi[c] = inverse * yi[c];
     }
-  if (has_L)  // L^T z = y, by the rows of L^T (L's columns), last first
+  const Eigen::SparseMatrix<double>& L = f.matrixL().nestedExpression();
+  if (n > 0 && m > 0 && L.nonZeros() > 0) {  // L^T z = y, by the rows of L^T (L's columns), last first
+    const int* outer = L.outerIndexPtr();
+    const int* inner = L.innerIndexPtr();
+    const double* value = L.valuePtr();
     for (Eigen::Index i = n - 1; i >= 0; --i) {
       double* yi = Y.row(i).data();
-      for (int k = below(i), end = outer[i + 1]; k < end; ++k) {
+      for (int k = below(L, i), end = outer[i + 1]; k < end; ++k) {
         const double* yr = Y.row(inner[k]).data();
         const double v = value[k];
         for (Eigen::Index c = 0; c < m; ++c) yi[c] -= v * yr[c];
       }
     }
+  }
   if (f.permutationP().size() > 0) X = f.permutationPinv() * Y;
   else X = Y;
+}
+
+void solve_columns(const LdltFactor& f, Eigen::Ref<Eigen::MatrixXd> X, RowsOfColumns& scratch) {
+  if (X.rows() == 0 || X.cols() == 0) return;
+  forward_columns(f, X, scratch);
+  backward_columns(f, scratch, X);
 }
 
 }  // namespace tendril

@@ -19,4 +19,9 @@ using RowsOfColumns = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eige
 // it has been sized).
 void solve_columns(const LdltFactor& f, Eigen::Ref<Eigen::MatrixXd> X, RowsOfColumns& scratch);
 
+// Its two halves, A^-1 = (L^-1 P)^T D^-1 (L^-1 P): Y <- L^-1 P X, then
+// X <- P^-1 L^-T D^-1 Y (low_rank_solve.hpp corrects between them).
+void forward_columns(const LdltFactor& f, const Eigen::Ref<const Eigen::MatrixXd>& X, RowsOfColumns& Y);
+void backward_columns(const LdltFactor& f, RowsOfColumns& Y, Eigen::Ref<Eigen::MatrixXd> X);
+
 }  // namespace tendril

@@ -1,4 +1,5 @@
-// Sherman-Morrison-Woodbury on the old factor (low_rank_solve.hpp).
+// Sherman-Morrison-Woodbury between the halves of the factor's solve
+// (low_rank_solve.hpp).
 #include "physics/low_rank_solve.hpp"
 
 #include <cmath>
@@ -7,26 +8,63 @@ namespace tendril {
 
 void LowRankSolve::clear() {
   rows_.clear();
-  Z_.resize(0, 0);
+  G_.clear();
+  S_.resize(0, 0);
   C_.resize(0, 0);
+  inverse_d_.resize(0);
 }
 
-bool LowRankSolve::set(const Solve& B, Eigen::Index n, const std::vector<int>& rows, const Eigen::MatrixXd& delta) {
+bool LowRankSolve::set(const LdltFactor& f, const Eigen::VectorXd& grown, const std::vector<int>& rows,
+                       const Eigen::MatrixXd& delta) {
   const Eigen::Index k = Eigen::Index(rows.size()), had = Eigen::Index(rows_.size());
-  // Columns of Z for the rows seen before stay (B did not change on its old
-  // rows); on rows B gained since they are zero.
-  Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(n, k);
-  Z.topLeftCorner(Z_.rows(), had) = Z_.leftCols(had);
-  Eigen::MatrixXd e = Eigen::MatrixXd::Zero(n, k - had);  // the new rows' unit columns, solved at once
-  for (Eigen::Index c = had; c < k; ++c) e(rows[std::size_t(c)], c - had) = 1;
-  B(e);
-  Z.rightCols(k - had) = e;
-  Z_ = std::move(Z);
+  const Eigen::Index n0 = f.rows(), n = n0 + grown.size();
+  // D^-1: the factor's on its rows (vectorD() is a copy: taken once), the
+  // grown diagonal's after them.
+  inverse_d_.resize(n);
+  inverse_d_.head(n0) = f.vectorD().cwiseInverse();
+  inverse_d_.tail(grown.size()) = grown.cwiseInverse();
+  // The new rows' columns of G: a factored row's unit column forward-solved
+  // (all of them in one pass), a grown row's its own unit column. Those of
+  // the rows seen before stay: the factor did not change, and grown rows
+  // are apart from it.
+  std::vector<Eigen::Index> factored;
+  for (Eigen::Index c = had; c < k; ++c)
+    if (rows[std::size_t(c)] < n0) factored.push_back(c);
+  Eigen::MatrixXd units = Eigen::MatrixXd::Zero(n0, Eigen::Index(factored.size()));
+  for (std::size_t u = 0; u < factored.size(); ++u) units(rows[std::size_t(factored[u])], Eigen::Index(u)) = 1;
+  RowsOfColumns forward;
+  forward_columns(f, units, forward);
+  G_.resize(std::size_t(k));
+  for (std::size_t u = 0; u < factored.size(); ++u) {
+    Column& g = G_[std::size_t(factored[u])];
+    g = {};
+    for (Eigen::Index i = 0; i < n0; ++i)
+      if (const double v = forward(i, Eigen::Index(u)); v != 0) g.row.push_back(int(i)), g.value.push_back(v);
+  }
+  for (Eigen::Index c = had; c < k; ++c)
+    if (rows[std::size_t(c)] >= n0) G_[std::size_t(c)] = {{rows[std::size_t(c)]}, {1.0}};
+  // S = G^T D^-1 G: the block of the old rows stays, the new rows' entries
+  // from each new column scattered and dotted with every column.
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(k, k);
+  S.topLeftCorner(had, had) = S_.topLeftCorner(had, had);
+  dense_.assign(std::size_t(n), 0.0);
+  for (Eigen::Index j = had; j < k; ++j) {
+    const Column& gj = G_[std::size_t(j)];
+    for (std::size_t e = 0; e < gj.row.size(); ++e)
+      dense_[std::size_t(gj.row[e])] = gj.value[e] * inverse_d_[gj.row[e]];
+    for (Eigen::Index i = 0; i < k; ++i) {
+      const Column& gi = G_[std::size_t(i)];
+      double sum = 0;
+      for (std::size_t e = 0; e < gi.row.size(); ++e) sum += gi.value[e] * dense_[std::size_t(gi.row[e])];
+      S(i, j) = sum;
+      S(j, i) = sum;
+    }
+    for (int r : gj.row) dense_[std::size_t(r)] = 0.0;
+  }
+  S_ = std::move(S);
   rows_ = rows;
   C_ = delta;
-  Eigen::MatrixXd S(k, k);
-  for (Eigen::Index r = 0; r < k; ++r) S.row(r) = Z_.row(rows_[std::size_t(r)]);
-  K_.compute(Eigen::MatrixXd::Identity(k, k) + S * C_);
+  K_.compute(Eigen::MatrixXd::Identity(k, k) + S_ * C_);
   // A positive determinant is necessary for B + D to stay positive definite;
   // a small rcond means the correction would lose the digits a fresh
   // factorisation keeps.
@@ -34,15 +72,30 @@ bool LowRankSolve::set(const Solve& B, Eigen::Index n, const std::vector<int>& r
   return std::isfinite(det) && det > 0 && K_.rcond() > 1e-10;
 }
 
-void LowRankSolve::solve(const Solve& B, Eigen::MatrixXd& b) const {
-  B(b);
-  if (rows_.empty()) return;
-  yT_.resize(Eigen::Index(rows_.size()));
-  for (Eigen::Index c = 0; c < b.cols(); ++c) {
-    for (std::size_t r = 0; r < rows_.size(); ++r) yT_[Eigen::Index(r)] = b(rows_[r], c);
-    const Eigen::VectorXd w = C_ * K_.solve(yT_);
-    b.col(c).noalias() -= Z_ * w;
+void LowRankSolve::solve(const LdltFactor& f, const Eigen::VectorXd& grown, Eigen::MatrixXd& b,
+                         RowsOfColumns& scratch) const {
+  const Eigen::Index n0 = f.rows(), m = b.cols();
+  if (b.rows() == 0 || m == 0) return;
+  forward_columns(f, b.topRows(n0), scratch);  // f = F b on the factored rows; the grown ones stay in b
+  if (!rows_.empty()) {
+    auto at = [&](int i, Eigen::Index c) -> double& { return i < n0 ? scratch(i, c) : b(i, c); };
+    yT_.resize(Eigen::Index(rows_.size()));
+    for (Eigen::Index c = 0; c < m; ++c) {
+      for (std::size_t t = 0; t < G_.size(); ++t) {
+        const Column& g = G_[t];
+        double sum = 0;
+        for (std::size_t e = 0; e < g.row.size(); ++e) sum += g.value[e] * (inverse_d_[g.row[e]] * at(g.row[e], c));
+        yT_[Eigen::Index(t)] = sum;
+      }
+      const Eigen::VectorXd w = C_ * K_.solve(yT_);
+      for (std::size_t t = 0; t < G_.size(); ++t) {
+        const Column& g = G_[t];
+        for (std::size_t e = 0; e < g.row.size(); ++e) at(g.row[e], c) -= g.value[e] * w[Eigen::Index(t)];
+      }
+    }
   }
+  backward_columns(f, scratch, b.topRows(n0));
+  if (grown.size() > 0) b.bottomRows(grown.size()).array().colwise() /= grown.array();
 }
 
 }  // namespace tendril

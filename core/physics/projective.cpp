@@ -250,7 +250,7 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
       for (const auto& e : extra)
         if (place[std::size_t(e.row())] >= 0 && place[std::size_t(e.col())] >= 0)
           C(place[std::size_t(e.row())], place[std::size_t(e.col())]) += e.value();
-      if (!s.change.set([&s](Eigen::MatrixXd& b) { s.base_solve(b); }, rows, s.changed, C)) return false;
+      if (!s.change.set(s.factor, s.grown, s.changed, C)) return false;
     } else {
       const std::vector<int> changed = s.changed;
       s.A = assemble(m, s.row, rows, reference_.data(), inv_dt2, diagonal);
@@ -262,12 +262,6 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
   factored_ = true;
   ++updates_;
   return true;
-}
-
-void ProjectiveSystem::Axis::base_solve(Eigen::MatrixXd& b) const {
-  const Eigen::Index n0 = A.rows();
-  solve_columns(factor, b.topRows(n0), scratch);
-  if (grown.size() > 0) b.bottomRows(grown.size()).array().colwise() /= grown.array();
 }
 
 // The axes that share a system (equal rows) are solved together, a column
@@ -287,7 +281,7 @@ void ProjectiveSystem::solve(const Model& m, Vec3* rhs) {
     for (ParticleId p : integrated)
       if (row[p] >= 0)
         for (int c = 0; c < count; ++c) s.b(row[p], c) = rhs[p][axes[c]];
-    if (s.b.size() != 0) s.change.solve([&s](Eigen::MatrixXd& b) { s.base_solve(b); }, s.b);
+    s.change.solve(s.factor, s.grown, s.b, s.scratch);
     for (ParticleId p : integrated)
       for (int c = 0; c < count; ++c) rhs[p][axes[c]] = row[p] >= 0 ? s.b(row[p], c) : 0.0;
   }

@@ -94,11 +94,10 @@ class ProjectiveSystem {
     Factor factor;
     Eigen::VectorXd grown;         // rows added since factor(): their diagonal
     LowRankSolve change;           // diag(A, grown) + change: the current matrix
-    void base_solve(Eigen::MatrixXd& b) const;  // diag(A, grown)^-1 b, every column
     std::vector<int> changed;      // rows changed since factor(), in order
     std::size_t budget = 0;        // how many may before factor() pays
     Eigen::MatrixXd b;                 // a column per axis that shares it
-    mutable RowsOfColumns scratch;     // solve_columns'
+    RowsOfColumns scratch;             // the forward half of a solve (low_rank_solve.hpp)
   };
   template <class Add>  // every matrix entry's terms, in a fixed order, through add(row, column, value)
   void terms(const Model& m, const std::vector<int>& row, const Vec3* x, double inv_dt2,
