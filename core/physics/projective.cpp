@@ -184,9 +184,7 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
       known_[p] = 1;
     }
   for (int a = 0; a < 3; ++a) {
-    bool shared = false;  // with an axis done already
-    for (int b = 0; b < a; ++b) shared |= axis_[b] == axis_[a];
-    if (shared) continue;
+    if (shared_before(a)) continue;  // done with that axis
     Axis& s = *axis_[a];
     s.row = std::move(row[a]);
     // The new matrix minus the base (the old one, and the diagonal of rows
@@ -264,14 +262,18 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
   return true;
 }
 
+bool ProjectiveSystem::shared_before(int a) const {
+  for (int b = 0; b < a; ++b)
+    if (axis_[b] == axis_[a]) return true;
+  return false;
+}
+
 // The axes that share a system (equal rows) are solved together, a column
 // each: one pass over the factor for x, y and z of a net without locks.
 void ProjectiveSystem::solve(const Model& m, Vec3* rhs) {
   const std::vector<ParticleId>& integrated = m.particles.integrated.raw();
   for (int a = 0; a < 3; ++a) {
-    bool done = false;  // with an axis before it
-    for (int b = 0; b < a; ++b) done |= axis_[b] == axis_[a];
-    if (done) continue;
+    if (shared_before(a)) continue;  // solved with that axis
     Axis& s = *axis_[a];
     int axes[3], count = 0;
     for (int b = a; b < 3; ++b)

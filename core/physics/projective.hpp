@@ -105,6 +105,7 @@ class ProjectiveSystem {
   Eigen::SparseMatrix<double> assemble(const Model& m, const std::vector<int>& row, int rows, const Vec3* x,
                                        double inv_dt2, const std::vector<double>& diagonal) const;
   void factor_axis(Axis& s, int a);
+  bool shared_before(int a) const;  // axis a's system is an earlier axis's too
   std::array<std::vector<int>, 3> rows_of(const Model& m, std::array<int, 3>& count) const;
   Key key_;
   std::uint64_t revision_ = 0;
