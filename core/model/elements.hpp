@@ -120,15 +120,19 @@ bool parse_goal_kind(const std::string& name, Goal::Kind& out);
 // A new element type joins the partition by calling place() whenever its
 // particles change (and erase() to remove it), and the solver loops over
 // awake_end() only; Model::set_passive then has to re-place it too.
+// `edits` lists the indices written since the solver's lean copy last
+// caught up (bar_chunks.hpp patches itself from it).
 template <class E>
 struct ElementBuffer {
   LoggedVector<E> items;
   std::size_t awake = 0;
   UndoLog* log = nullptr;
+  EditList edits;
 
   void attach(UndoLog* undo) {
     log = undo;
     items.attach(undo);
+    items.watch(&edits);
   }
   std::size_t size() const { return items.size(); }
   E& operator[](std::size_t n) { return items[n]; }

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "model/edit_list.hpp"
+
 namespace tendril {
 
 class UndoLog {
@@ -53,19 +55,23 @@ class UndoLog {
 };
 
 // A vector whose writes through operator[] (and growth, shrinking) are
-// logged while a transaction records. Hot loops use data() and raw(), which
-// bypass the log: the solver never runs inside a transaction.
+// logged while a transaction records, and listed in an EditList when one
+// watches it. Hot loops use data() and raw(), which bypass both: the solver
+// never runs inside a transaction and never writes what it watches.
 template <class T>
 class LoggedVector {
  public:
   void attach(UndoLog* log) { log_ = log; }
+  void watch(EditList* edits) { edits_ = edits; }
   const T& operator[](std::size_t i) const { return v_[i]; }
   T& operator[](std::size_t i) {
     if (log_) log_->value(v_, i);
+    if (edits_) edits_->touch(i);
     return v_[i];
   }
   void push_back(const T& x) {
     if (log_) log_->length(v_);
+    if (edits_) edits_->touch(v_.size());
     v_.push_back(x);
   }
   void pop_back() {
@@ -73,10 +79,12 @@ class LoggedVector {
       log_->value(v_, v_.size() - 1);
       log_->length(v_);
     }
+    if (edits_) edits_->touch(v_.size() - 1);
     v_.pop_back();
   }
   void clear() {
     if (log_) log_->whole(v_);
+    if (edits_) edits_->lose();
     v_.clear();
   }
   const T& back() const { return v_.back(); }
@@ -94,6 +102,7 @@ class LoggedVector {
  private:
   std::vector<T> v_;
   UndoLog* log_ = nullptr;
+  EditList* edits_ = nullptr;
 };
 
 }  // namespace tendril

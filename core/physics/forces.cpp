@@ -22,7 +22,7 @@ Solver::Solver(Model& model) : model_(model), workers_(std::make_unique<Workers>
 Solver::~Solver() = default;
 
 const BarChunks& Solver::bar_chunks() const {
-  if (!bar_chunks_.current(model_)) bar_chunks_.derive(model_);
+  bar_chunks_.update(model_);
   return bar_chunks_;
 }
 

@@ -1,5 +1,7 @@
 #include "physics/hinge_chunks.hpp"
 
+#include <iterator>
+
 #include "physics/equal_blocks.hpp"
 
 namespace tendril {
@@ -53,7 +55,7 @@ void HingeChunks::derive(const Model& m, std::uint32_t shift, std::size_t n_chun
     block_begin[c] = std::uint32_t(same.size());
     mark_equal_blocks(begin[c], begin[c + 1], kBlock, [&](std::uint32_t e, std::uint32_t f) {
       return same_bits(EI[e], EI[f]) && same_bits(rest[e], rest[f]);
-    }, same);
+    }, std::back_inserter(same));
   }
   model_ = &m;
   revision_ = m.revision;

@@ -599,8 +599,8 @@ double Solver::fused_step_bytes() const {
   if (!fused_kick_drift_applies()) return 0;
   const BarChunks& B = bar_chunks();
   const Particles& P = model_.particles;
-  const double particles = double(B.particles.size()), bars = double(B.i.size()),
-               crossing = double(B.slot_force.size());
+  const double particles = double(B.particles.size()), bars = double(B.bar_count()),
+               crossing = double(B.crossing_count());
   const Vec3 g = model_.gravity;
   const bool masses = settings.mass_mode == MassMode::Physical || !(g.x() == 0 && g.y() == 0 && g.z() == 0 &&
                                                                     !std::signbit(g.x()) && !std::signbit(g.y()) &&

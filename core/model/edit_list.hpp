@@ -1,0 +1,37 @@
+#pragma once
+// Which indices of a vector were written since a derived copy last caught
+// up (DESIGN principle 1: a change costs what it touched), so that the copy
+// is patched at a cost proportional to the change instead of derived again.
+// Bounded: past kLimit entries, or after a clear, it only says "everything"
+// until the consumer catches up again. A rollback needs nothing more: every
+// write it undoes was listed when it was made.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace tendril {
+
+struct EditList {
+  static constexpr std::size_t kLimit = 4096;
+  std::vector<std::uint32_t> at;  // written indices, in write order, repeats kept
+  bool everything = false;
+  // The model revision at which the consumer last caught up (restart).
+  std::uint64_t since = ~std::uint64_t(0);
+
+  void touch(std::size_t i) {
+    if (everything) return;
+    if (at.size() == kLimit) return lose();
+    at.push_back(std::uint32_t(i));
+  }
+  void lose() {
+    everything = true;
+    at.clear();
+  }
+  void restart(std::uint64_t revision) {
+    everything = false;
+    at.clear();
+    since = revision;
+  }
+};
+
+}  // namespace tendril
