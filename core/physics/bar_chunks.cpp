@@ -6,15 +6,6 @@
 
 namespace tendril {
 
-namespace {
-
-// The room a chunk keeps after n bars (or after n crossing bars' slots):
-// what some hundred rule firings in one chunk add before the copy is laid
-// out afresh.
-std::uint32_t room(std::uint32_t n) { return n / 16 + 32; }
-
-}  // namespace
-
 std::uint32_t BarChunks::chunk_shift_for(std::size_t capacity) {
   std::uint32_t s = 10;
   while (s < 14 && (std::size_t(1) << (s + 1)) * 16 <= capacity) ++s;

@@ -50,6 +50,10 @@ struct BarChunks {
   // The number of particles per chunk for a model of this capacity: a power
   // of two from 1024 to 16384, about capacity / 16.
   static std::uint32_t chunk_shift_for(std::size_t capacity);
+  // The room a chunk keeps after n elements (bars, slots, hinges): what some
+  // hundred rule firings in one chunk add before the copy is laid out
+  // afresh.
+  static std::uint32_t room(std::uint32_t n) { return n / 16 + 32; }
   // Up to date: nothing moved or was written since the last update.
   bool current(const Model& m) const;
   // Derives the copy afresh.

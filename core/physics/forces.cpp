@@ -547,7 +547,7 @@ TENDRIL_SIMD_CLONES ForceSum* Solver::chunk_force_sums(std::uint32_t chunk, cons
 
 const HingeChunks& Solver::hinge_chunks() const {
   const BarChunks& B = bar_chunks();
-  if (!hinge_chunks_.current(model_, B.shift)) hinge_chunks_.derive(model_, B.shift, B.chunks.size());
+  hinge_chunks_.update(model_, B.shift, B.chunks.size());
   return hinge_chunks_;
 }
 
@@ -561,7 +561,7 @@ TENDRIL_SIMD_CLONES std::uint32_t Solver::chunk_hinge_sums(std::uint32_t chunk, 
   const ParticleId base = ParticleId(chunk) << shift;
   const Owned<true> own{base, base + (ParticleId(1) << shift)};
   const ParticleId *hi = H.i.data(), *hj = H.j.data(), *hk = H.k.data();
-  const std::uint32_t first = H.begin[chunk], last = H.begin[chunk + 1];
+  const std::uint32_t first = H.begin[chunk], last = H.end[chunk];
   HingeBlock hb;
   for (std::uint32_t e0 = first; e0 < last; e0 += kHingeBlock) {
     const std::uint32_t n = std::min(kHingeBlock, last - e0);

@@ -10,8 +10,10 @@
 //   order, after its bars, as the element pass sums them;
 // - only what the force reads: ends, EI and rest curvature, and the hinge's
 //   index among the awake ones to name it when it cannot be evaluated.
-// Derived again whenever the model's revision, its capacity or the chunk
-// size moved.
+// Derived again when the chunk size moved; else patched from the hinges'
+// edit list as the bar copy is (bar_chunks.hpp): each chunk keeps room
+// after its items, and a chunk a change touched is written again from the
+// model in model order, the sequences a fresh copy would hold.
 #include <cstdint>
 #include <vector>
 
@@ -20,15 +22,21 @@
 namespace tendril {
 
 struct HingeChunks {
-  bool current(const Model& m, std::uint32_t shift) const {
-    return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity() && shift_ == shift;
-  }
+  // Up to date: nothing moved or was written since the last update.
+  bool current(const Model& m, std::uint32_t shift) const;
   void derive(const Model& m, std::uint32_t shift, std::size_t n_chunks);
+  // Patched from m.hinges.edits where it can, else derived; restarts the
+  // edit list either way.
+  void update(Model& m, std::uint32_t shift, std::size_t n_chunks);
+  std::size_t item_count() const;
+  std::uint64_t derivations = 0, patches = 0;  // how it was brought up to date
 
-  std::vector<std::uint32_t> begin;  // chunks + 1, into the items
-  std::vector<std::uint32_t> hinge;  // per item: its index among the awake hinges
+  // Chunk c's items are [begin[c], end[c]); its room ends at limit[c].
+  std::vector<std::uint32_t> begin, end, limit;
+  std::vector<std::uint32_t> hinge;  // per item: its index among the awake hinges (kNone in the room)
   std::vector<ParticleId> i, j, k;
   std::vector<double> EI, rest;
+  std::vector<std::uint32_t> place_of;  // per awake hinge: the place of one of its items
   // The step takes a chunk's hinges in blocks of this many (forces.cpp);
   // per block, 1 where its hinges share EI and rest curvature bit for bit
   // (a beam of one section, straight at rest), so that the step reads the
@@ -41,6 +49,11 @@ struct HingeChunks {
   }
 
  private:
+  bool patch(const Model& m, std::size_t n_chunks);
+  void put(const Hinge& h, std::uint32_t e, std::uint32_t at);
+  void mark_blocks(std::uint32_t c);
+  void append_empty_chunk();
+  std::vector<std::uint32_t> touched_, affected_, items_;  // patch's scratch
   const Model* model_ = nullptr;
   std::uint64_t revision_ = ~std::uint64_t(0);
   std::size_t capacity_ = 0;

@@ -627,10 +627,10 @@ double Solver::fused_step_bytes() const {
   double hinges = 0;
   if (model_.hinges.awake > 0) {
     const HingeChunks& H = hinge_chunks();
-    hinges = double(H.i.size()) * (4 + 4 + 4);
-    for (std::size_t c = 0; c + 1 < H.begin.size(); ++c)
-      for (std::uint32_t e0 = H.begin[c]; e0 < H.begin[c + 1]; e0 += HingeChunks::kBlock)
-        hinges += 16 * (H.same_block(std::uint32_t(c), e0) ? 1.0 : std::min(HingeChunks::kBlock, H.begin[c + 1] - e0));
+    hinges = double(H.item_count()) * (4 + 4 + 4);
+    for (std::size_t c = 0; c < H.begin.size(); ++c)
+      for (std::uint32_t e0 = H.begin[c]; e0 < H.end[c]; e0 += HingeChunks::kBlock)
+        hinges += 16 * (H.same_block(std::uint32_t(c), e0) ? 1.0 : std::min(HingeChunks::kBlock, H.end[c] - e0));
   }
   // Per triangle of a chunk its index and the plan's ends, stresses,
   // G-string density, flags and slots; per projected corner its index,
