@@ -18,11 +18,16 @@
 //   rest      one cable's rest length 1 % shorter;
 //   particle  a new particle hung by a cable under an interior one (the
 //             matrix grows by a row per axis).
+// --model beams takes a woven grid of spline beams instead (one beam along
+// every row and one along every column through the same particles, EA =
+// 1e5 N, EI = 10 N m^2): rest shortens a beam edge, particle inserts a
+// particle on one (rule 13), and the hinges' copies follow the change too.
 // projective_refactor factors every change afresh: the cost before.
 // The ratio is (change + step after) / steady step, medians over --reps.
 // Thread CPU time, so that other processes on the machine do not count.
 //
 //   bench_topology [--sizes 16384,100000,1M] [--reps 5] [--changes cable,...] [--integrators leapfrog,...]
+//                  [--model net|beams]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -43,6 +48,7 @@ namespace {
 
 struct Net {
   std::unique_ptr<Model> model;
+  bool beams = false;  // a woven grid of beams instead of the bar net
   int side = 0;
   std::vector<ParticleId> grid;
   std::vector<BlockId> rest, removed;  // the cables a change shortens or deletes, one per rep
@@ -55,9 +61,10 @@ std::pair<int, int> place(int s, int rep, int kind) {
   return {1 + (7 + 13 * rep + 3 * kind) % (s - 3), 1 + (5 + 29 * rep + 11 * kind) % (s - 3)};
 }
 
-Net build_net(int s, int reps) {
+Net build_net(int s, int reps, bool beams) {
   Net n;
   n.model = std::make_unique<Model>();
+  n.beams = beams;
   n.side = s;
   Model& m = *n.model;
   n.grid.reserve(std::size_t(s) * s);
@@ -68,7 +75,19 @@ Net build_net(int s, int reps) {
       if (r == 0 || c == 0 || r == s - 1 || c == s - 1) m.set_lock(p, kLockTranslation);
       else m.set_load(p, Vec3(0, 0, -1));
     }
-  m.add_quad_grid(n.grid, s, s, Section{1e5, 0, 1e3, 0});
+  if (beams) {
+    std::vector<ParticleId> line(std::size_t(s), 0);
+    for (int r = 0; r < s; ++r) {
+      for (int c = 0; c < s; ++c) line[std::size_t(c)] = n.at(r, c);
+      m.add_beam(line, Section{1e5, 10, 0, 0});
+    }
+    for (int c = 0; c < s; ++c) {
+      for (int r = 0; r < s; ++r) line[std::size_t(r)] = n.at(r, c);
+      m.add_beam(line, Section{1e5, 10, 0, 0});
+    }
+  } else {
+    m.add_quad_grid(n.grid, s, s, Section{1e5, 0, 1e3, 0});
+  }
   // Cables across cells, for the changes to shorten or delete (the net's
   // bars are a patch's, whose rest lengths no rule changes one at a time).
   for (int rep = 0; rep < reps; ++rep) {
@@ -101,11 +120,16 @@ void apply(Net& n, Change kind, int rep) {
     case Change::Remove: m.delete_cable(n.removed[rep]); break;
     case Change::Rest: {
       const auto [r1, c1] = place(n.side, rep, 1);
-      const ParticleId a = n.at(r1, c1 + 1), b = n.at(r1 + 1, c1);
+      // the beam edge to the cable's right end's left on its row, else the cable
+      const ParticleId a = n.at(r1, c1 + 1), b = n.beams ? n.at(r1, c1) : n.at(r1 + 1, c1);
       m.set_rest_length(a, b, 0.99 * m.edge_rest_length(a, b));
       break;
     }
     case Change::Particle: {
+      if (n.beams) {
+        m.insert_particle(n.at(r, c), n.at(r, c + 1));
+        break;
+      }
       const ParticleId a = n.at(r, c);
       const ParticleId p = m.add_particle(m.particles.position[a] + Vec3(0, 0, -0.5));
       m.add_cable(a, p, Section{1e5, 0, 0, 0});
@@ -125,8 +149,8 @@ struct Row {
   std::string error;
 };
 
-Row measure(int side, const Variant& v, Change kind, int reps) {
-  Net net = build_net(side, reps);
+Row measure(int side, bool beams, const Variant& v, Change kind, int reps) {
+  Net net = build_net(side, reps, beams);
   Solver solver(*net.model);
   solver.settings.integrator = v.integrator;
   solver.settings.mixed_implicit = v.implicit;
@@ -172,7 +196,9 @@ int usage(const char* argv0, int code) {
                "  --changes      cable, remove, rest, particle (default: all)\n"
                "  --integrators  leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective,\n"
                "                 projective_refactor (every change factored afresh: the cost before the low-rank\n"
-               "                 correction), mixed (its implicit phase VIE), mixed_projective (default: all)\n",
+               "                 correction), mixed (its implicit phase VIE), mixed_projective (default: all)\n"
+               "  --model        net (default) or beams (a woven grid of spline beams: rest shortens a beam edge,\n"
+               "                 particle inserts a particle on one)\n",
                argv0);
   return code;
 }
@@ -183,6 +209,7 @@ int main(int argc, char** argv) {
   tendril::restart_with_huge_pages(argv);  // as tendril itself runs (io/huge_pages.hpp)
   std::vector<std::size_t> sizes{16384, 100000};  // 128 x 128 (the issue's 16K) and 316 x 316
   int reps = 5;
+  bool beams = false;
   std::vector<Change> changes{Change::Cable, Change::Remove, Change::Rest, Change::Particle};
   std::vector<Variant> variants;
   for (Integrator i : kIntegrators) variants.push_back({integrator_name(i), i});
@@ -201,6 +228,11 @@ int main(int argc, char** argv) {
       };
       if (a == "--sizes") sizes = parse_sizes(value());
       else if (a == "--reps") reps = std::max(1, std::stoi(value()));
+      else if (a == "--model") {
+        const std::string model = value();
+        if (model != "net" && model != "beams") throw std::runtime_error("unknown model '" + model + "'");
+        beams = model == "beams";
+      }
       else if (a == "--changes") {
         changes.clear();
         for (const std::string& name : split(value())) {
@@ -221,11 +253,18 @@ int main(int argc, char** argv) {
   }
 
   std::puts("bench_topology: one rule application and the step after it, against a steady step (issue 18)");
-  std::puts("  the issue-18 net: s x s particles 1 m apart, bars on the grid edges (EA = 1e5 N, prestress 1e3 N),");
-  std::puts("  boundary locked, 1 N in -z on the interior; default settings (mixed: mixed_switch 1, implicit at once)");
-  std::puts("  changes: cable = a new cable across a grid cell; remove = one such cable deleted;");
-  std::puts("           rest = one such cable's rest length -1 %;");
-  std::puts("           particle = a new particle on a cable (the matrix grows by a row per axis)");
+  if (beams) {
+    std::puts("  a woven grid: s x s particles 1 m apart, a spline beam along every row and column (EA = 1e5 N,");
+    std::puts("  EI = 10 N m^2), boundary locked, 1 N in -z on the interior; default settings");
+    std::puts("  changes: cable = a new cable across a grid cell; remove = one such cable deleted;");
+    std::puts("           rest = a beam edge's rest length -1 %; particle = a particle inserted on a beam edge (rule 13)");
+  } else {
+    std::puts("  the issue-18 net: s x s particles 1 m apart, bars on the grid edges (EA = 1e5 N, prestress 1e3 N),");
+    std::puts("  boundary locked, 1 N in -z on the interior; default settings (mixed: mixed_switch 1, implicit at once)");
+    std::puts("  changes: cable = a new cable across a grid cell; remove = one such cable deleted;");
+    std::puts("           rest = one such cable's rest length -1 %;");
+    std::puts("           particle = a new particle on a cable (the matrix grows by a row per axis)");
+  }
   std::printf("  medians of %d changes, thread CPU time; ratio = (change + step after) / steady step\n", reps);
   std::printf("  goal: ratio <= 2 for every integrator (DESIGN principle 1)%s\n\n",
 #ifdef NDEBUG
@@ -242,7 +281,7 @@ int main(int argc, char** argv) {
                  "updates"});
     for (const Variant& v : variants)
       for (Change c : changes) {
-        const Row r = measure(side, v, c, reps);
+        const Row r = measure(side, beams, v, c, reps);
         if (!r.error.empty()) {
           failed = true;
           table.add({v.label, change_name(c), "error: " + r.error.substr(0, 60), "", "", "", "", "", ""});
