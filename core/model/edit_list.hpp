@@ -5,6 +5,7 @@
 // Bounded: past kLimit entries, or after a clear, it only says "everything"
 // until the consumer catches up again. A rollback needs nothing more: every
 // write it undoes was listed when it was made.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -26,6 +27,19 @@ struct EditList {
   void lose() {
     everything = true;
     at.clear();
+  }
+  // What a consumer must look at again when the awake elements went from
+  // `before` to `now` in number: the indices written and those that crossed
+  // the border, ascending, once each. False when the border moved by more
+  // than kLimit.
+  bool touched(std::size_t before, std::size_t now, std::vector<std::uint32_t>& out) const {
+    const std::size_t low = std::min(before, now), high = std::max(before, now);
+    if (high - low > kLimit) return false;
+    out.assign(at.begin(), at.end());
+    for (std::size_t e = low; e < high; ++e) out.push_back(std::uint32_t(e));
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return true;
   }
   void restart(std::uint64_t revision) {
     everything = false;

@@ -126,12 +126,7 @@ bool BarChunks::patch(const Model& m) {
   if (n_chunks < chunks.size()) return false;
   while (chunks.size() < n_chunks) append_empty_chunk();
   const std::size_t old_awake = place_of.size(), new_awake = m.bars.awake;
-  const std::size_t low = std::min(old_awake, new_awake), high = std::max(old_awake, new_awake);
-  if (high - low > EditList::kLimit) return false;
-  touched_.assign(m.bars.edits.at.begin(), m.bars.edits.at.end());
-  for (std::size_t e = low; e < high; ++e) touched_.push_back(std::uint32_t(e));
-  std::sort(touched_.begin(), touched_.end());
-  touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
+  if (!m.bars.edits.touched(old_awake, new_awake, touched_)) return false;
   const Bar* bars = m.bars.awake_begin();
   affected_.clear();
   joining_.clear();

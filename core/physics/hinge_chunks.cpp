@@ -105,12 +105,7 @@ bool HingeChunks::patch(const Model& m, std::size_t n_chunks) {
   if (n_chunks < begin.size()) return false;
   while (begin.size() < n_chunks) append_empty_chunk();
   const std::size_t old_awake = place_of.size(), new_awake = m.hinges.awake;
-  const std::size_t low = std::min(old_awake, new_awake), high = std::max(old_awake, new_awake);
-  if (high - low > EditList::kLimit) return false;
-  touched_.assign(m.hinges.edits.at.begin(), m.hinges.edits.at.end());
-  for (std::size_t e = low; e < high; ++e) touched_.push_back(std::uint32_t(e));
-  std::sort(touched_.begin(), touched_.end());
-  touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
+  if (!m.hinges.edits.touched(old_awake, new_awake, touched_)) return false;
   const Hinge* hinges = m.hinges.awake_begin();
   affected_.clear();
   std::uint32_t at_chunk[3];
