@@ -121,7 +121,7 @@ bool parse_goal_kind(const std::string& name, Goal::Kind& out);
 // particles change (and erase() to remove it), and the solver loops over
 // awake_end() only; Model::set_passive then has to re-place it too.
 // `edits` lists the indices written since the solver's lean copy last
-// caught up (bar_chunks.hpp patches itself from it).
+// caught up (bar_chunks.hpp and hinge_chunks.hpp patch themselves from it).
 template <class E>
 struct ElementBuffer {
   LoggedVector<E> items;
