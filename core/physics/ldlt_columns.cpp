@@ -45,12 +45,14 @@ void forward_columns(const LdltFactor& f, const Eigen::Ref<const Eigen::MatrixXd
   }
 }
 
-void backward_columns(const LdltFactor& f, RowsOfColumns& Y, Eigen::Ref<Eigen::MatrixXd> X) {
+Eigen::VectorXd inverse_diagonal(const LdltFactor& f) { return f.vectorD().cwiseInverse(); }
+
+void backward_columns(const LdltFactor& f, const Eigen::VectorXd& inverse_d, RowsOfColumns& Y,
+                      Eigen::Ref<Eigen::MatrixXd> X) {
   const Eigen::Index n = Y.rows(), m = Y.cols();
-  const Eigen::VectorXd& D = f.vectorD();
-  if (D.size() > 0)
+  if (inverse_d.size() > 0)
     for (Eigen::Index i = 0; i < n; ++i) {
-      const double inverse = 1.0 / D[i];  // D^-1 y as Eigen's diagonal inverse takes it
+      const double inverse = inverse_d[i];  // D^-1 y as Eigen's diagonal inverse takes it
       double* yi = Y.row(i).data();
       for (Eigen::Index c = 0; c < m; ++c) yi[c] = inverse * yi[c];
     }
@@ -75,7 +77,7 @@ void backward_columns(const LdltFactor& f, RowsOfColumns& Y, Eigen::Ref<Eigen::M
 void solve_columns(const LdltFactor& f, Eigen::Ref<Eigen::MatrixXd> X, RowsOfColumns& scratch) {
   if (X.rows() == 0 || X.cols() == 0) return;
   forward_columns(f, X, scratch);
-  backward_columns(f, scratch, X);
+  backward_columns(f, inverse_diagonal(f), scratch, X);
 }
 
 }  // namespace tendril

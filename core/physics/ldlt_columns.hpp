@@ -21,7 +21,11 @@ void solve_columns(const LdltFactor& f, Eigen::Ref<Eigen::MatrixXd> X, RowsOfCol
 
 // Its two halves, A^-1 = (L^-1 P)^T D^-1 (L^-1 P): Y <- L^-1 P X, then
 // X <- P^-1 L^-T D^-1 Y (low_rank_solve.hpp corrects between them).
+// `inverse_d` is inverse_diagonal(f), taken once per factorisation: Eigen's
+// vectorD() returns a copy, which a solve would allocate every time.
 void forward_columns(const LdltFactor& f, const Eigen::Ref<const Eigen::MatrixXd>& X, RowsOfColumns& Y);
-void backward_columns(const LdltFactor& f, RowsOfColumns& Y, Eigen::Ref<Eigen::MatrixXd> X);
+void backward_columns(const LdltFactor& f, const Eigen::VectorXd& inverse_d, RowsOfColumns& Y,
+                      Eigen::Ref<Eigen::MatrixXd> X);
+Eigen::VectorXd inverse_diagonal(const LdltFactor& f);  // D^-1, as Eigen's solve takes it
 
 }  // namespace tendril

@@ -6,22 +6,21 @@
 
 namespace tendril {
 
-void LowRankSolve::clear() {
+void LowRankSolve::clear(const LdltFactor& f) {
   rows_.clear();
   G_.clear();
   S_.resize(0, 0);
   C_.resize(0, 0);
-  inverse_d_.resize(0);
+  inverse_d_ = inverse_diagonal(f);
 }
 
 bool LowRankSolve::set(const LdltFactor& f, const Eigen::VectorXd& grown, const std::vector<int>& rows,
                        const Eigen::MatrixXd& delta) {
   const Eigen::Index k = Eigen::Index(rows.size()), had = Eigen::Index(rows_.size());
   const Eigen::Index n0 = f.rows(), n = n0 + grown.size();
-  // D^-1: the factor's on its rows (vectorD() is a copy: taken once), the
-  // grown diagonal's after them.
-  inverse_d_.resize(n);
-  inverse_d_.head(n0) = f.vectorD().cwiseInverse();
+  // D^-1: the factor's on its rows (kept since clear), the grown
+  // diagonal's after them.
+  inverse_d_.conservativeResize(n);
   inverse_d_.tail(grown.size()) = grown.cwiseInverse();
   // The new rows' columns of G: a factored row's unit column forward-solved
   // (all of them in one pass), a grown row's its own unit column. Those of
@@ -87,14 +86,15 @@ void LowRankSolve::solve(const LdltFactor& f, const Eigen::VectorXd& grown, Eige
         for (std::size_t e = 0; e < g.row.size(); ++e) sum += g.value[e] * (inverse_d_[g.row[e]] * at(g.row[e], c));
         yT_[Eigen::Index(t)] = sum;
       }
-      const Eigen::VectorXd w = C_ * K_.solve(yT_);
+      kw_ = K_.solve(yT_);  // sized once: no allocation in a step
+      w_.noalias() = C_ * kw_;
       for (std::size_t t = 0; t < G_.size(); ++t) {
         const Column& g = G_[t];
-        for (std::size_t e = 0; e < g.row.size(); ++e) at(g.row[e], c) -= g.value[e] * w[Eigen::Index(t)];
+        for (std::size_t e = 0; e < g.row.size(); ++e) at(g.row[e], c) -= g.value[e] * w_[Eigen::Index(t)];
       }
     }
   }
-  backward_columns(f, scratch, b.topRows(n0));
+  backward_columns(f, inverse_d_, scratch, b.topRows(n0));
   if (grown.size() > 0) b.bottomRows(grown.size()).array().colwise() /= grown.array();
 }
 

@@ -29,8 +29,8 @@ namespace tendril {
 
 class LowRankSolve {
  public:
-  // Forgets every change: solves with B alone.
-  void clear();
+  // Forgets every change: solves with B alone, f newly factored.
+  void clear(const LdltFactor& f);
   // The change D is now `delta` (dense over `rows`, in their order) on the
   // rows `rows`, which extend rows() (rows already there keep their place);
   // B is diag(f's matrix, grown). False when I + S C is singular or its
@@ -50,9 +50,9 @@ class LowRankSolve {
   std::vector<int> rows_;
   std::vector<Column> G_;
   Eigen::MatrixXd S_, C_;
-  Eigen::VectorXd inverse_d_;  // D^-1 of every row, factored and grown
+  Eigen::VectorXd inverse_d_;  // D^-1 of every row, the factor's (from clear) and the grown ones
   Eigen::PartialPivLU<Eigen::MatrixXd> K_;  // I + S C
-  mutable Eigen::VectorXd yT_;
+  mutable Eigen::VectorXd yT_, kw_, w_;  // y_T, (I + S C)^-1 y_T, w
   mutable std::vector<double> dense_;  // a column of G scattered, for S
 };
 

@@ -114,7 +114,7 @@ void ProjectiveSystem::factor_axis(Axis& s, int a) {
   if (s.factor.info() != Eigen::Success || (s.factor.vectorD().array() <= 0).any())
     throw NumericalError("projective: the global matrix of axis " + std::string(1, char('x' + a)) +
                          " is not positive definite (a free particle without mass or stiffness?)");
-  s.change.clear();
+  s.change.clear(s.factor);
   s.changed.clear();
   s.grown.resize(0);
   // A changed row costs 2 n flops per solve on top of the triangular solves'
