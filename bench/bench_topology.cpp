@@ -22,12 +22,16 @@
 // every row and one along every column through the same particles, EA =
 // 1e5 N, EI = 10 N m^2): rest shortens a beam edge, particle inserts a
 // particle on one (rule 13), and the hinges' copies follow the change too.
+// --model beam6 takes the same grid with every beam 6 DOF (the 6-DOF plan
+// follows the change), --model membrane the net's patch as a CST membrane
+// (form-finding, two triangles a quad, 1 kN/m both ways) with the net's
+// changes, which the CST plan must not derive again for.
 // projective_refactor factors every change afresh: the cost before.
 // The ratio is (change + step after) / steady step, medians over --reps.
 // Thread CPU time, so that other processes on the machine do not count.
 //
 //   bench_topology [--sizes 16384,100000,1M] [--reps 5] [--changes cable,...] [--integrators leapfrog,...]
-//                  [--model net|beams]
+//                  [--model net|beams|beam6|membrane]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -46,9 +50,17 @@ using namespace tendril::bench;
 
 namespace {
 
+// The model a change is made in: the issue's bar net, a woven grid of spline
+// beams, the same grid of 6-DOF beams, or the net's patch as a CST membrane.
+enum class Kind { Net, Beams, Beam6, Membrane };
+const char* kind_name(Kind k) {
+  return k == Kind::Net ? "net" : k == Kind::Beams ? "beams" : k == Kind::Beam6 ? "beam6" : "membrane";
+}
+
 struct Net {
   std::unique_ptr<Model> model;
-  bool beams = false;  // a woven grid of beams instead of the bar net
+  Kind kind = Kind::Net;
+  bool beams() const { return kind == Kind::Beams || kind == Kind::Beam6; }
   int side = 0;
   std::vector<ParticleId> grid;
   std::vector<BlockId> rest, removed;  // the cables a change shortens or deletes, one per rep
@@ -61,10 +73,10 @@ std::pair<int, int> place(int s, int rep, int kind) {
   return {1 + (7 + 13 * rep + 3 * kind) % (s - 3), 1 + (5 + 29 * rep + 11 * kind) % (s - 3)};
 }
 
-Net build_net(int s, int reps, bool beams) {
+Net build_net(int s, int reps, Kind kind) {
   Net n;
   n.model = std::make_unique<Model>();
-  n.beams = beams;
+  n.kind = kind;
   n.side = s;
   Model& m = *n.model;
   n.grid.reserve(std::size_t(s) * s);
@@ -75,18 +87,33 @@ Net build_net(int s, int reps, bool beams) {
       if (r == 0 || c == 0 || r == s - 1 || c == s - 1) m.set_lock(p, kLockTranslation);
       else m.set_load(p, Vec3(0, 0, -1));
     }
-  if (beams) {
+  if (n.beams()) {
     std::vector<ParticleId> line(std::size_t(s), 0);
+    std::vector<BlockId> beams;
     for (int r = 0; r < s; ++r) {
       for (int c = 0; c < s; ++c) line[std::size_t(c)] = n.at(r, c);
-      m.add_beam(line, Section{1e5, 10, 0, 0});
+      beams.push_back(m.add_beam(line, Section{1e5, 10, 0, 0}));
     }
     for (int c = 0; c < s; ++c) {
       for (int r = 0; r < s; ++r) line[std::size_t(r)] = n.at(r, c);
-      m.add_beam(line, Section{1e5, 10, 0, 0});
+      beams.push_back(m.add_beam(line, Section{1e5, 10, 0, 0}));
     }
+    if (kind == Kind::Beam6)
+      for (BlockId b : beams) m.set_beam_formulation(b, 6);
   } else {
-    m.add_quad_grid(n.grid, s, s, Section{1e5, 0, 1e3, 0});
+    const BlockId patch = m.add_quad_grid(n.grid, s, s, Section{1e5, 0, 1e3, 0});
+    if (kind == Kind::Membrane) {  // bench_throughput's CST membrane: 2 triangles a quad, 1 kN/m both ways
+      std::vector<Model::Triangle> triangles;
+      for (int r = 0; r + 1 < s; ++r)
+        for (int c = 0; c + 1 < s; ++c) {
+          triangles.push_back({n.at(r, c), n.at(r, c + 1), n.at(r + 1, c + 1)});
+          triangles.push_back({n.at(r + 1, c + 1), n.at(r + 1, c), n.at(r, c)});
+        }
+      Membrane film;
+      film.mode = Membrane::FormFinding;
+      film.sigma_warp = film.sigma_weft = 1e3;
+      m.set_patch_formulation(patch, film, triangles);
+    }
   }
   // Cables across cells, for the changes to shorten or delete (the net's
   // bars are a patch's, whose rest lengths no rule changes one at a time).
@@ -121,12 +148,12 @@ void apply(Net& n, Change kind, int rep) {
     case Change::Rest: {
       const auto [r1, c1] = place(n.side, rep, 1);
       // the beam edge to the cable's right end's left on its row, else the cable
-      const ParticleId a = n.at(r1, c1 + 1), b = n.beams ? n.at(r1, c1) : n.at(r1 + 1, c1);
+      const ParticleId a = n.at(r1, c1 + 1), b = n.beams() ? n.at(r1, c1) : n.at(r1 + 1, c1);
       m.set_rest_length(a, b, 0.99 * m.edge_rest_length(a, b));
       break;
     }
     case Change::Particle: {
-      if (n.beams) {
+      if (n.beams()) {
         m.insert_particle(n.at(r, c), n.at(r, c + 1));
         break;
       }
@@ -149,8 +176,8 @@ struct Row {
   std::string error;
 };
 
-Row measure(int side, bool beams, const Variant& v, Change kind, int reps) {
-  Net net = build_net(side, reps, beams);
+Row measure(int side, Kind model, const Variant& v, Change kind, int reps) {
+  Net net = build_net(side, reps, model);
   Solver solver(*net.model);
   solver.settings.integrator = v.integrator;
   solver.settings.mixed_implicit = v.implicit;
@@ -197,8 +224,9 @@ int usage(const char* argv0, int code) {
                "  --integrators  leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective,\n"
                "                 projective_refactor (every change factored afresh: the cost before the low-rank\n"
                "                 correction), mixed (its implicit phase VIE), mixed_projective (default: all)\n"
-               "  --model        net (default) or beams (a woven grid of spline beams: rest shortens a beam edge,\n"
-               "                 particle inserts a particle on one)\n",
+               "  --model        net (default), beams (a woven grid of spline beams: rest shortens a beam edge,\n"
+               "                 particle inserts a particle on one), beam6 (the same grid, 6-DOF beams) or\n"
+               "                 membrane (the net's patch as a CST membrane, the net's changes)\n",
                argv0);
   return code;
 }
@@ -209,7 +237,7 @@ int main(int argc, char** argv) {
   tendril::restart_with_huge_pages(argv);  // as tendril itself runs (io/huge_pages.hpp)
   std::vector<std::size_t> sizes{16384, 100000};  // 128 x 128 (the issue's 16K) and 316 x 316
   int reps = 5;
-  bool beams = false;
+  Kind model = Kind::Net;
   std::vector<Change> changes{Change::Cable, Change::Remove, Change::Rest, Change::Particle};
   std::vector<Variant> variants;
   for (Integrator i : kIntegrators) variants.push_back({integrator_name(i), i});
@@ -229,9 +257,11 @@ int main(int argc, char** argv) {
       if (a == "--sizes") sizes = parse_sizes(value());
       else if (a == "--reps") reps = std::max(1, std::stoi(value()));
       else if (a == "--model") {
-        const std::string model = value();
-        if (model != "net" && model != "beams") throw std::runtime_error("unknown model '" + model + "'");
-        beams = model == "beams";
+        const std::string name = value();
+        bool known = false;
+        for (Kind k : {Kind::Net, Kind::Beams, Kind::Beam6, Kind::Membrane})
+          if (name == kind_name(k)) model = k, known = true;
+        if (!known) throw std::runtime_error("unknown model '" + name + "'");
       }
       else if (a == "--changes") {
         changes.clear();
@@ -253,12 +283,16 @@ int main(int argc, char** argv) {
   }
 
   std::puts("bench_topology: one rule application and the step after it, against a steady step (issue 18)");
-  if (beams) {
+  if (model == Kind::Beams || model == Kind::Beam6) {
+    std::puts(model == Kind::Beam6 ? "  a woven grid of 6-DOF beams (Beam6 elements, rotations at every particle):"
+                                   : "  a woven grid of spline beams:");
     std::puts("  a woven grid: s x s particles 1 m apart, a spline beam along every row and column (EA = 1e5 N,");
     std::puts("  EI = 10 N m^2), boundary locked, 1 N in -z on the interior; default settings");
     std::puts("  changes: cable = a new cable across a grid cell; remove = one such cable deleted;");
     std::puts("           rest = a beam edge's rest length -1 %; particle = a particle inserted on a beam edge (rule 13)");
   } else {
+    if (model == Kind::Membrane)
+      std::puts("  the net's patch as a CST membrane (form-finding, 2 triangles a quad, 1 kN/m both ways):");
     std::puts("  the issue-18 net: s x s particles 1 m apart, bars on the grid edges (EA = 1e5 N, prestress 1e3 N),");
     std::puts("  boundary locked, 1 N in -z on the interior; default settings (mixed: mixed_switch 1, implicit at once)");
     std::puts("  changes: cable = a new cable across a grid cell; remove = one such cable deleted;");
@@ -281,7 +315,7 @@ int main(int argc, char** argv) {
                  "updates"});
     for (const Variant& v : variants)
       for (Change c : changes) {
-        const Row r = measure(side, beams, v, c, reps);
+        const Row r = measure(side, model, v, c, reps);
         if (!r.error.empty()) {
           failed = true;
           table.add({v.label, change_name(c), "error: " + r.error.substr(0, 60), "", "", "", "", "", ""});

@@ -11,7 +11,11 @@
 // often their beam-end frames: runs of entries with the same constants, or
 // the same ends, are marked, so that a block of the step inside such a run
 // reads one entry's instead of streaming a column each.
-// Derived again whenever the model's revision or capacity moved.
+// The plan in the model's order follows the elements' own edit list
+// (m.beam6s.edits): a change elsewhere in the model leaves it as it is, an
+// element whose values changed but whose ends did not is written again in
+// place (its runs marked again), and any other change of the awake
+// elements derives it again. A plan in a share's order follows it.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -24,12 +28,21 @@ namespace tendril {
 inline constexpr std::uint32_t kBeam6Block = 64;
 
 struct Beam6Plan {
-  bool current(const Model& m) const {
-    return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity();
-  }
+  // Up to date: no element written, woken or put to sleep since the last update.
+  bool current(const Model& m) const;
+  // Brings the plan in the model's order up to date and restarts m.beam6s.edits.
+  void update(Model& m);
   void derive(const Model& m);
   // The entries items[0 .. n) of `from` (in the model's order), in that order.
   void derive(const Beam6Plan& from, const std::vector<std::uint32_t>& items);
+  // A plan derived from `from` brought up to date with it: the entries of
+  // the elements `from` wrote again in its last update written again too.
+  // False when that is not enough (`from` was derived again, or updated
+  // twice since): derive it again from the share's items.
+  bool follow(const Beam6Plan& from);
+  // Moves whenever the elements' ends or number may have (what the shares
+  // are derived from), not when an element's values alone were written.
+  std::uint64_t generation() const { return generation_; }
   // The index among the awake elements of entry e.
   std::uint32_t element(std::uint32_t e) const { return elements.empty() ? e : elements[e]; }
 
@@ -68,9 +81,21 @@ struct Beam6Plan {
   template <class Each>
   static void columns(Beam6Plan& out, const Beam6Plan& in, Each each);
   void find_runs();
+  void mark_runs_at(std::uint32_t e);  // entry e's runs again, those after it marked already
+  void put(const Beam6& b, std::uint32_t e);
+  bool patch(const Model& m);
   const Model* model_ = nullptr;
-  std::uint64_t revision_ = ~std::uint64_t(0);
-  std::size_t capacity_ = 0;
+  std::uint64_t caught_up_ = ~std::uint64_t(0);  // the revision m.beam6s.edits was restarted at
+  std::size_t awake_ = 0;
+  std::uint64_t generation_ = 0;
+  // Moves at every update; `patched` lists the entries the last one wrote
+  // in place, when it moved from `patched_from`.
+  std::uint64_t values_ = 0, patched_from_ = 0;
+  std::vector<std::uint32_t> patched_;
+  // A plan in a share's order: what it was derived or followed from, and
+  // the places of each element of `from` (two at most: one per owner).
+  std::uint64_t from_generation_ = 0, from_values_ = 0;
+  std::vector<std::uint32_t> places_;
 };
 
 }  // namespace tendril

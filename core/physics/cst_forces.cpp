@@ -314,7 +314,7 @@ void project_corners(const CstPlan& plan, const std::uint32_t* slots, std::uint3
 
 void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
   const double gf = settings.geometric_factor;
-  if (!cst_plan_.current(model_)) cst_plan_.derive(model_);
+  cst_plan_.update(model_);
   const CstPlan& plan = cst_plan_;
   // The projected corners' sums, one per slot: zero between calls (every
   // slot is cleared after its projection).
@@ -329,8 +329,8 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
   }
   // On threads: each adds into the particles it owns (ElementShares).
   const std::vector<ParticleId>& bound = element_bounds();
-  if (!cst_shares_.current(model_, bound))
-    cst_shares_.derive(model_, bound, n_csts, [&](std::uint32_t e, ParticleId* at) {
+  if (!cst_shares_.current(plan.generation(), bound))
+    cst_shares_.derive(plan.generation(), bound, n_csts, [&](std::uint32_t e, ParticleId* at) {
       at[0] = plan.i[e], at[1] = plan.j[e], at[2] = plan.k[e];
       return 3;
     });
@@ -347,16 +347,17 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
 // chunk's share of the triangles and of the projected corners (those of
 // its particles), derived before the pass, since the pass runs on threads.
 void Solver::prepare_cst_chunks() const {
-  if (!cst_plan_.current(model_)) cst_plan_.derive(model_);
+  cst_plan_.update(model_);
   const CstPlan& plan = cst_plan_;
   const std::vector<ParticleId>& bound = chunk_bounds();
-  if (!cst_chunk_shares_.current(model_, bound))
-    cst_chunk_shares_.derive(model_, bound, std::uint32_t(plan.i.size()), [&](std::uint32_t e, ParticleId* at) {
+  const std::uint64_t source = plan.generation();
+  if (!cst_chunk_shares_.follow(source, bound))
+    cst_chunk_shares_.derive(source, bound, std::uint32_t(plan.i.size()), [&](std::uint32_t e, ParticleId* at) {
       at[0] = plan.i[e], at[1] = plan.j[e], at[2] = plan.k[e];
       return 3;
     });
-  if (!corner_chunk_shares_.current(model_, bound))
-    corner_chunk_shares_.derive(model_, bound, std::uint32_t(plan.corner.size()),
+  if (!corner_chunk_shares_.follow(source, bound))
+    corner_chunk_shares_.derive(source, bound, std::uint32_t(plan.corner.size()),
                                 [&](std::uint32_t s, ParticleId* at) {
                                   at[0] = plan.corner[s];
                                   return 1;

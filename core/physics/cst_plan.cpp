@@ -1,6 +1,46 @@
 #include "physics/cst_plan.hpp"
 
+#include "physics/element_shares.hpp"
+
 namespace tendril {
+
+bool CstPlan::current(const Model& m) const {
+  const EditList& edits = m.csts.edits;
+  return model_ == &m && awake_ == m.csts.awake && edits.since == caught_up_ && !edits.everything &&
+         edits.at.empty();
+}
+
+void CstPlan::update(Model& m) {
+  if (current(m)) return;
+  const EditList& edits = m.csts.edits;
+  const bool patchable = model_ == &m && awake_ == m.csts.awake && edits.since == caught_up_ && !edits.everything;
+  if (!(patchable && patch(m))) derive(m);
+  m.csts.edits.restart(m.revision);
+  caught_up_ = m.revision;
+}
+
+bool CstPlan::put(const Cst& t, std::size_t e, bool check) {
+  const Membrane& mb = t.membrane;
+  const std::uint8_t along = mb.mode == Membrane::FormFinding ? t.interior : 0;
+  if (check && (i[e] != t.i || j[e] != t.j || k[e] != t.k || along_normal[e] != along)) return false;
+  i[e] = t.i, j[e] = t.j, k[e] = t.k;
+  sigma_warp[e] = mb.sigma_warp, sigma_weft[e] = mb.sigma_weft;
+  g_string[e] = 0.5 * (mb.sigma_warp + mb.sigma_weft);
+  along_normal[e] = along;
+  analysis[e] = mb.mode == Membrane::Analysis;
+  return true;
+}
+
+// The awake triangles written since the last update, each in place when
+// its slots stay; false (some entries written, the plan to be derived)
+// otherwise.
+bool CstPlan::patch(const Model& m) {
+  if (!m.csts.edits.touched(awake_, awake_, touched_)) return false;
+  const Cst* csts = m.csts.awake_begin();
+  for (std::uint32_t e : touched_)
+    if (e < awake_ && !put(csts[e], e, true)) return false;
+  return true;
+}
 
 void CstPlan::derive(const Model& m) {
   const Cst* csts = m.csts.awake_begin();
@@ -14,13 +54,8 @@ void CstPlan::derive(const Model& m) {
   std::vector<std::uint32_t> slot_of(m.particles.capacity(), kNoSlot);
   for (std::size_t e = 0; e < n; ++e) {
     const Cst& t = csts[e];
-    const Membrane& mb = t.membrane;
-    i[e] = t.i, j[e] = t.j, k[e] = t.k;
-    sigma_warp[e] = mb.sigma_warp, sigma_weft[e] = mb.sigma_weft;
-    g_string[e] = 0.5 * (mb.sigma_warp + mb.sigma_weft);
-    along_normal[e] = mb.mode == Membrane::FormFinding ? t.interior : 0;
-    analysis[e] = mb.mode == Membrane::Analysis;
-    if (mb.mode != Membrane::FormFinding || !t.interior) continue;
+    put(t, e, false);
+    if (!along_normal[e]) continue;
     // Every corner of an interior form-finding triangle is projected (with
     // its pull summed in its slot only where its bit is set).
     const ParticleId corners[3] = {t.i, t.j, t.k};
@@ -34,8 +69,8 @@ void CstPlan::derive(const Model& m) {
     }
   }
   model_ = &m;
-  revision_ = m.revision;
-  capacity_ = m.particles.capacity();
+  awake_ = n;
+  generation_ = new_stamp();
 }
 
 }  // namespace tendril

@@ -4,9 +4,11 @@
 // form-finding force reads, and the corners whose pull is projected onto
 // their normal, each given a slot so that the element pass's sums sit
 // together and in one compact array (the fused step sums a chunk's corners
-// in rows by particle, cst_forces.cpp). Derived again whenever the
-// model's revision or capacity moved (every change of a triangle, its
-// membrane or a particle's passivity moves the revision).
+// in rows by particle, cst_forces.cpp). It follows the triangles' own
+// edit list (m.csts.edits): a change elsewhere in the model (a cable, a
+// new particle) leaves it as it is, a triangle whose values changed but
+// whose corners and projected corners did not is written again in place,
+// and any other change of the awake triangles derives it again.
 #include <cstdint>
 #include <vector>
 
@@ -23,10 +25,15 @@ struct CstCornerSums {
 struct CstPlan {
   static constexpr std::uint32_t kNoSlot = ~std::uint32_t(0);
 
-  bool current(const Model& m) const {
-    return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity();
-  }
+  // Up to date: no triangle written, woken or put to sleep since the last update.
+  bool current(const Model& m) const;
+  // Brings the plan up to date and restarts m.csts.edits.
+  void update(Model& m);
   void derive(const Model& m);
+  // Moves whenever the triangles' corners or slots may have (what the
+  // shares of the triangles and corners are derived from), not when a
+  // triangle's stresses alone were written again.
+  std::uint64_t generation() const { return generation_; }
 
   // Per awake triangle, in the model's order.
   std::vector<ParticleId> i, j, k;
@@ -41,9 +48,15 @@ struct CstPlan {
   std::vector<ParticleId> corner;  // per slot: the corner
 
  private:
+  // Triangle e's values but its slots; false when its corners or which of
+  // them are projected differ from the entry's (the slots would move).
+  bool put(const Cst& t, std::size_t e, bool check);
+  bool patch(const Model& m);
   const Model* model_ = nullptr;
-  std::uint64_t revision_ = ~std::uint64_t(0);
-  std::size_t capacity_ = 0;
+  std::uint64_t caught_up_ = ~std::uint64_t(0);  // the revision m.csts.edits was restarted at
+  std::size_t awake_ = 0;
+  std::uint64_t generation_ = 0;
+  std::vector<std::uint32_t> touched_;
 };
 
 }  // namespace tendril

@@ -10,8 +10,12 @@
 // both (a few along each boundary), rather than kept in a buffer. The fused
 // step shares its CST triangles and projected corners out the same way, by
 // chunk instead of by thread.
-// Derived again when the model's revision, its capacity or the split moves.
+// Derived again when its source moves (a stamp that moves whenever the
+// elements' ends may have: the model's revision, or a plan's generation)
+// or the split does; a split that only gained parts past its end (new
+// particles past the last chunk, which no element reaches) is extended.
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -32,14 +36,22 @@ struct ElementShares {
   std::vector<std::uint32_t> begin;  // threads + 1, into items
   std::vector<std::uint32_t> items;  // element indices, thread by thread, each in the model's order
 
-  bool current(const Model& m, const std::vector<ParticleId>& split) const {
-    return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity() && bound == split;
+  bool current(std::uint64_t source, const std::vector<ParticleId>& split) const {
+    return source_ == source && bound == split;
+  }
+  // Up to date for the split, extended when it only gained parts at its end.
+  bool follow(std::uint64_t source, const std::vector<ParticleId>& split) {
+    if (source_ != source || split.size() < bound.size() || !std::equal(bound.begin(), bound.end(), split.begin()))
+      return false;
+    bound = split;
+    begin.resize(bound.size(), begin.back());
+    return true;
   }
   // ends(e, out) writes element e's particles into out[0..3) and returns
   // how many it has. Also for many parts (the fused step's chunks): each
   // element is placed once per distinct owner of its ends.
   template <class Ends>
-  void derive(const Model& m, const std::vector<ParticleId>& split, std::uint32_t n, Ends ends) {
+  void derive(std::uint64_t source, const std::vector<ParticleId>& split, std::uint32_t n, Ends ends) {
     bound = split;
     const unsigned parts = unsigned(bound.size()) - 1;
     // The owner of p: how many of bound[1 .. parts) are <= p.
@@ -71,15 +83,17 @@ struct ElementShares {
       const int d = owners(e, at_part);
       for (int c = 0; c < d; ++c) items[next[at_part[c]]++] = e;
     }
-    model_ = &m;
-    revision_ = m.revision;
-    capacity_ = m.particles.capacity();
+    source_ = source;
   }
 
  private:
-  const Model* model_ = nullptr;
-  std::uint64_t revision_ = ~std::uint64_t(0);
-  std::size_t capacity_ = 0;
+  std::uint64_t source_ = ~std::uint64_t(0);
 };
+
+// A stamp no other call returns (a plan's generation, ElementShares' source).
+inline std::uint64_t new_stamp() {
+  static std::atomic<std::uint64_t> stamps{std::uint64_t(1) << 62};  // apart from any model revision
+  return ++stamps;
+}
 
 }  // namespace tendril

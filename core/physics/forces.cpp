@@ -591,19 +591,24 @@ const std::vector<ParticleId>& Solver::chunk_bounds() const {
 }
 
 void Solver::prepare_beam6_chunks() const {
-  if (!beam6_plan_.current(model_)) beam6_plan_.derive(model_);
+  beam6_plan_.update(model_);
   const Beam6Plan& plan = beam6_plan_;
   const std::vector<ParticleId>& bound = chunk_bounds();
-  if (!beam6_chunk_shares_.current(model_, bound) || !beam6_chunk_plan_.current(model_)) {
-    beam6_chunk_shares_.derive(model_, bound, std::uint32_t(plan.i.size()), [&](std::uint32_t e, ParticleId* at) {
-      at[0] = plan.i[e], at[1] = plan.j[e];
-      return 2;
-    });
-    beam6_chunk_plan_.derive(plan, beam6_chunk_shares_.items);
-  }
+  const bool shares_follow = beam6_chunk_shares_.follow(plan.generation(), bound);
+  if (!shares_follow)
+    beam6_chunk_shares_.derive(plan.generation(), bound, std::uint32_t(plan.i.size()),
+                               [&](std::uint32_t e, ParticleId* at) {
+                                 at[0] = plan.i[e], at[1] = plan.j[e];
+                                 return 2;
+                               });
+  if (!shares_follow || !beam6_chunk_plan_.follow(plan)) beam6_chunk_plan_.derive(plan, beam6_chunk_shares_.items);
+  // The rotating particles' shares follow their list itself (compared
+  // whole: 4 bytes a rotating particle; an element bound again may move a
+  // particle in it without moving the plan's generation).
   const std::vector<ParticleId>& rotating = model_.particles.rotational.raw();
-  if (!rotating_chunk_shares_.current(model_, bound)) {
-    rotating_chunk_shares_.derive(model_, bound, std::uint32_t(rotating.size()), [&](std::uint32_t e, ParticleId* at) {
+  if (!rotating_chunk_shares_.follow(0, bound) || rotating != rotating_seen_) {
+    rotating_seen_ = rotating;
+    rotating_chunk_shares_.derive(0, bound, std::uint32_t(rotating.size()), [&](std::uint32_t e, ParticleId* at) {
       at[0] = rotating[e];
       return 1;
     });
@@ -744,23 +749,25 @@ void Solver::accumulate_forces(const Vec3* x, const Quat* q, Vec3* F, double* S,
   const std::uint32_t n_hinges = std::uint32_t(model_.hinges.awake_end() - hinges);
   const Beam6* beam6s = model_.beam6s.awake_begin();
   const std::uint32_t n_beam6s = std::uint32_t(model_.beam6s.awake_end() - beam6s);
-  if (n_beam6s > 0 && !beam6_plan_.current(model_)) beam6_plan_.derive(model_);
+  if (n_beam6s > 0) beam6_plan_.update(model_);
   const Beam6Plan& plan = beam6_plan_;
   if (n_hinges + n_beam6s > 0 && threaded) {
     // On threads: each adds into the particles it owns (ElementShares).
     const std::vector<ParticleId>& bound = element_bounds();
     const unsigned threads = unsigned(bound.size()) - 1;
-    if (n_hinges > 0 && !hinge_shares_.current(model_, bound))
-      hinge_shares_.derive(model_, bound, n_hinges, [&](std::uint32_t e, ParticleId* at) {
+    if (n_hinges > 0 && !hinge_shares_.current(model_.revision, bound))
+      hinge_shares_.derive(model_.revision, bound, n_hinges, [&](std::uint32_t e, ParticleId* at) {
         at[0] = hinges[e].i, at[1] = hinges[e].j, at[2] = hinges[e].k;
         return 3;
       });
-    if (n_beam6s > 0 && (!beam6_shares_.current(model_, bound) || !beam6_thread_plan_.current(model_))) {
-      beam6_shares_.derive(model_, bound, n_beam6s, [&](std::uint32_t e, ParticleId* at) {
-        at[0] = plan.i[e], at[1] = plan.j[e];
-        return 2;
-      });
-      beam6_thread_plan_.derive(plan, beam6_shares_.items);
+    if (n_beam6s > 0) {
+      const bool shares_current = beam6_shares_.current(plan.generation(), bound);
+      if (!shares_current)
+        beam6_shares_.derive(plan.generation(), bound, n_beam6s, [&](std::uint32_t e, ParticleId* at) {
+          at[0] = plan.i[e], at[1] = plan.j[e];
+          return 2;
+        });
+      if (!shares_current || !beam6_thread_plan_.follow(plan)) beam6_thread_plan_.derive(plan, beam6_shares_.items);
     }
     std::vector<std::uint32_t>& bad = thread_bad_hinge_;
     bad.assign(threads, kNone);
