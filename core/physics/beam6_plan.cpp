@@ -25,7 +25,7 @@ bool Beam6Plan::current(const Model& m) const {
 void Beam6Plan::update(Model& m) {
   if (current(m)) return;
   const EditList& edits = m.beam6s.edits;
-  const bool patchable = model_ == &m && awake_ == m.beam6s.awake && edits.since == caught_up_ && !edits.everything;
+  const bool patchable = model_ == &m && edits.since == caught_up_ && !edits.everything;
   if (!(patchable && patch(m))) derive(m);
   m.beam6s.edits.restart(m.revision);
   caught_up_ = m.revision;
@@ -45,20 +45,34 @@ void Beam6Plan::put(const Beam6& b, std::uint32_t e) {
   torsion[e] = b.GJ / l;
 }
 
-// The awake elements written since the last update, in place when their
-// ends stay (from the last, so that each entry's runs are marked after
-// those of the entries behind it); false (the plan to be derived) when an
-// element's ends moved.
+// The awake elements written, woken or put to sleep since the last
+// update, in place (from the last, so that each entry's runs are marked
+// after those of the entries behind it); the generation moves when an
+// element's ends or the number of elements did.
 bool Beam6Plan::patch(const Model& m) {
   const Beam6* beams = m.beam6s.awake_begin();
-  if (!m.beam6s.edits.touched(awake_, awake_, patched_)) return false;
-  while (!patched_.empty() && patched_.back() >= awake_) patched_.pop_back();  // dormant: not in the plan
+  const std::size_t now = m.beam6s.awake;
+  if (!m.beam6s.edits.touched(awake_, now, patched_)) return false;
+  bool moved = now != awake_;
   for (std::uint32_t e : patched_)
-    if (beams[e].i != i[e] || beams[e].j != j[e]) return false;
-  for (std::size_t n = patched_.size(); n-- > 0;) {
-    put(beams[patched_[n]], patched_[n]);
-    mark_runs_at(patched_[n]);
+    if (e < now && e < awake_) moved |= beams[e].i != i[e] || beams[e].j != j[e];
+  if (now != awake_) {
+    columns(*this, *this, [now](auto& column, const auto&) { column.resize(now); });
+    same_constants_to.resize(now), same_ends_to.resize(now);
+    for (std::size_t e = awake_; e < now; ++e) same_constants_to[e] = same_ends_to[e] = std::uint32_t(e + 1);
   }
+  // The last entry marks its runs afresh when the plan shrank (they ended past it).
+  std::vector<std::uint32_t>& marked = marked_;
+  marked.clear();
+  for (std::uint32_t e : patched_)
+    if (e < now) marked.push_back(e);
+  if (now < awake_ && now > 0 && (marked.empty() || marked.back() != now - 1)) marked.push_back(std::uint32_t(now - 1));
+  for (std::size_t n = marked.size(); n-- > 0;) {
+    if (marked[n] < now) put(beams[marked[n]], marked[n]);
+    mark_runs_at(marked[n]);
+  }
+  awake_ = now;
+  if (moved) generation_ = new_stamp();
   patched_from_ = values_;
   values_ = new_stamp();
   return true;
@@ -74,6 +88,7 @@ void Beam6Plan::derive(const Model& m) {
   model_ = &m;
   awake_ = n;
   generation_ = values_ = new_stamp();
+  patched_from_ = ~std::uint64_t(0);
 }
 
 void Beam6Plan::derive(const Beam6Plan& from, const std::vector<std::uint32_t>& items) {
@@ -139,15 +154,31 @@ void mark_run_at(const std::array<const double*, 8>& columns, std::vector<std::u
 }  // namespace
 
 void Beam6Plan::find_runs() {
-  const std::size_t n = i.size();
-  same_constants_to.resize(n);
-  same_ends_to.resize(n);
+  same_constants_to.resize(i.size());
+  same_ends_to.resize(i.size());
+  find_runs(0, std::uint32_t(i.size()));
+}
+
+void Beam6Plan::find_runs(std::uint32_t first, std::uint32_t last) {
   const std::array<const double*, 8> constants = constant_columns(), ends = end_columns();
-  for (std::size_t e = n; e-- > 0;) {
-    const bool last = e + 1 == n;
-    same_constants_to[e] = !last && same_as_next(constants, e) ? same_constants_to[e + 1] : std::uint32_t(e + 1);
-    same_ends_to[e] = !last && same_as_next(ends, e) ? same_ends_to[e + 1] : std::uint32_t(e + 1);
+  for (std::uint32_t e = last; e-- > first;) {
+    const bool at_last = e + 1 == last;
+    same_constants_to[e] = !at_last && same_as_next(constants, e) ? same_constants_to[e + 1] : e + 1;
+    same_ends_to[e] = !at_last && same_as_next(ends, e) ? same_ends_to[e + 1] : e + 1;
   }
+}
+
+void Beam6Plan::resize(std::size_t n) {
+  const std::size_t before = i.size();
+  columns(*this, *this, [n](auto& column, const auto&) { column.resize(n); });
+  elements.resize(n, kNone);
+  same_constants_to.resize(n), same_ends_to.resize(n);
+  for (std::size_t e = before; e < n; ++e) same_constants_to[e] = same_ends_to[e] = std::uint32_t(e + 1);
+}
+
+void Beam6Plan::copy_entry(const Beam6Plan& from, std::uint32_t e, std::uint32_t at) {
+  columns(*this, from, [&](auto& out, const auto& in) { out[at] = in[e]; });
+  elements[at] = from.element(e);
 }
 
 void Beam6Plan::mark_runs_at(std::uint32_t e) {

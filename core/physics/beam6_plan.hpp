@@ -12,10 +12,11 @@
 // the same ends, are marked, so that a block of the step inside such a run
 // reads one entry's instead of streaming a column each.
 // The plan in the model's order follows the elements' own edit list
-// (m.beam6s.edits): a change elsewhere in the model leaves it as it is, an
-// element whose values changed but whose ends did not is written again in
-// place (its runs marked again), and any other change of the awake
-// elements derives it again. A plan in a share's order follows it.
+// (m.beam6s.edits): a change elsewhere in the model leaves it as it is,
+// and each element written, woken or put to sleep is written again in
+// place (its runs marked again); the chunks' copy (beam6_chunks.hpp)
+// follows the same list. A plan in a share's order follows it while no
+// element's ends move.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -43,6 +44,18 @@ struct Beam6Plan {
   // Moves whenever the elements' ends or number may have (what the shares
   // are derived from), not when an element's values alone were written.
   std::uint64_t generation() const { return generation_; }
+  // Moves at every update; patched() lists the entries the last one wrote
+  // (ascending; past the plan's end: elements gone), when it moved from
+  // patched_from(), else patched_from() matches no stamp.
+  std::uint64_t values() const { return values_; }
+  std::uint64_t patched_from() const { return patched_from_; }
+  const std::vector<std::uint32_t>& patched() const { return patched_; }
+  // For a copy with room (beam6_chunks.hpp): n entries, those of the room
+  // alone in their runs; entry e of `from` (in the model's order) at `at`;
+  // the runs of [first, last) marked afresh, ending at last.
+  void resize(std::size_t n);
+  void copy_entry(const Beam6Plan& from, std::uint32_t e, std::uint32_t at);
+  void find_runs(std::uint32_t first, std::uint32_t last);
   // The index among the awake elements of entry e.
   std::uint32_t element(std::uint32_t e) const { return elements.empty() ? e : elements[e]; }
 
@@ -90,8 +103,8 @@ struct Beam6Plan {
   std::uint64_t generation_ = 0;
   // Moves at every update; `patched` lists the entries the last one wrote
   // in place, when it moved from `patched_from`.
-  std::uint64_t values_ = 0, patched_from_ = 0;
-  std::vector<std::uint32_t> patched_;
+  std::uint64_t values_ = 0, patched_from_ = ~std::uint64_t(0);
+  std::vector<std::uint32_t> patched_, marked_;
   // A plan in a share's order: what it was derived or followed from, and
   // the places of each element of `from` (two at most: one per owner).
   std::uint64_t from_generation_ = 0, from_values_ = 0;

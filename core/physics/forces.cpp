@@ -593,15 +593,9 @@ const std::vector<ParticleId>& Solver::chunk_bounds() const {
 void Solver::prepare_beam6_chunks() const {
   beam6_plan_.update(model_);
   const Beam6Plan& plan = beam6_plan_;
+  const BarChunks& B = bar_chunks();
+  beam6_chunks_.update(plan, B.shift, B.chunks.size());
   const std::vector<ParticleId>& bound = chunk_bounds();
-  const bool shares_follow = beam6_chunk_shares_.follow(plan.generation(), bound);
-  if (!shares_follow)
-    beam6_chunk_shares_.derive(plan.generation(), bound, std::uint32_t(plan.i.size()),
-                               [&](std::uint32_t e, ParticleId* at) {
-                                 at[0] = plan.i[e], at[1] = plan.j[e];
-                                 return 2;
-                               });
-  if (!shares_follow || !beam6_chunk_plan_.follow(plan)) beam6_chunk_plan_.derive(plan, beam6_chunk_shares_.items);
   // The rotating particles' shares follow their list itself (compared
   // whole: 4 bytes a rotating particle; an element bound again may move a
   // particle in it without moving the plan's generation).
@@ -637,10 +631,10 @@ TENDRIL_SIMD_CLONES ForceSum* Solver::chunk_beam6_sums(std::uint32_t chunk, cons
     const ParticleId p = rotating_by_chunk_[k];
     turns[p - base] = ForceSum{moment[p].x(), moment[p].y(), moment[p].z(), 0.0};
   }
-  const ElementShares& sh = beam6_chunk_shares_;
+  const Beam6Chunks& B = beam6_chunks_;
   const Owned<true> own{base, base + (ParticleId(1) << shift)};
-  beam6_forces<true>(beam6_chunk_plan_, model_.beam6s.awake_begin(), sh.begin[chunk],
-                     sh.begin[chunk + 1] - sh.begin[chunk], own, x, q, settings.geometric_factor,
+  beam6_forces<true>(B.plan, model_.beam6s.awake_begin(), B.begin[chunk], B.end[chunk] - B.begin[chunk], own, x,
+                     q, settings.geometric_factor,
                      ChunkSink{sums, base, turns});
   return turns;
 }

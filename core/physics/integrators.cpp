@@ -650,10 +650,9 @@ double Solver::fused_step_bytes() const {
   double six_dof = 0;
   if (!P.rotational.empty()) {
     prepare_beam6_chunks();
-    const std::vector<std::uint32_t>& begin = beam6_chunk_shares_.begin;
-    for (std::size_t c = 0; c + 1 < begin.size(); ++c)
-      six_dof += beam6_chunk_plan_.step_bytes(begin[c], begin[c + 1] - begin[c]);
-    six_dof += double(beam6_chunk_shares_.items.size()) * 64 +
+    const Beam6Chunks& B = beam6_chunks_;
+    for (std::size_t c = 0; c < B.begin.size(); ++c) six_dof += B.plan.step_bytes(B.begin[c], B.end[c] - B.begin[c]);
+    six_dof += double(B.entry_count()) * 64 +
               double(P.rotational.size()) * (4 + 1 + 1 + 24 + 24 + 8 + 8 + 24 + 24 + 24 + 32 + 32);
   }
   // Two passes: id, position read and written, velocity read.

@@ -25,6 +25,7 @@
 
 #include "model/model.hpp"
 #include "physics/bar_chunks.hpp"
+#include "physics/beam6_chunks.hpp"
 #include "physics/beam6_plan.hpp"
 #include "physics/chunk_balance.hpp"
 #include "physics/cst_plan.hpp"
@@ -441,8 +442,8 @@ class Solver {
   mutable BarChunks bar_chunks_;
   mutable HingeChunks hinge_chunks_;
   mutable Beam6Plan beam6_plan_;  // forces.cpp: the 6-DOF elements as the step reads them
-  // The same in the order of beam6_shares_' and beam6_chunk_shares_' items.
-  mutable Beam6Plan beam6_thread_plan_, beam6_chunk_plan_;
+  mutable Beam6Plan beam6_thread_plan_;  // the same in the order of beam6_shares_' items
+  mutable Beam6Chunks beam6_chunks_;      // the same chunk by chunk, for the fused step
   mutable std::vector<Couple> couples_;
   mutable std::pair<std::uint64_t, std::uint64_t> couples_at_{~0ull, ~0ull};  // model revision, moment revision
   std::unique_ptr<Workers> workers_;
@@ -463,7 +464,7 @@ class Solver {
   mutable ElementShares hinge_shares_, beam6_shares_, cst_shares_;
   // The fused step's shares, by chunk: CST triangles, projected corners,
   // 6-DOF elements, rotating particles (and their ids, chunk by chunk).
-  mutable ElementShares cst_chunk_shares_, corner_chunk_shares_, beam6_chunk_shares_, rotating_chunk_shares_;
+  mutable ElementShares cst_chunk_shares_, corner_chunk_shares_, rotating_chunk_shares_;
   mutable std::vector<ParticleId> rotating_by_chunk_;
   mutable std::vector<ParticleId> rotating_seen_;  // the rotating list rotating_chunk_shares_ was derived from
   mutable std::vector<ParticleId> chunk_bound_;  // chunk_bounds
