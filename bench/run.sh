@@ -24,7 +24,8 @@
 # `topology` (only when asked for) times one rule application and the step
 # after it against a steady step, every integrator, on the same net
 # (bench/bench_topology.cpp; e.g. `bench/run.sh topology --sizes 16384,100000,1M`,
-# `--model beams` for a woven grid of spline beams);
+# `--model beams` for a woven grid of spline beams, `beam6` for 6-DOF ones,
+# `membrane` for the net as a CST membrane);
 # `low_rank` why that change is followed by a Woodbury correction and not
 # by conjugate gradients on the old factor (bench/bench_low_rank.cpp).
 set -euo pipefail
