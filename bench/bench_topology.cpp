@@ -17,7 +17,9 @@
 //   remove    one of those cables deleted (rule 7);
 //   rest      one cable's rest length 1 % shorter;
 //   particle  a new particle hung by a cable under an interior one (the
-//             matrix grows by a row per axis).
+//             matrix grows by a row per axis);
+//   passive   (only when asked for) an interior particle made passive, its
+//             elements dormant (multi-resolution, thesis 5.5.2.3).
 // --model beams takes a woven grid of spline beams instead (one beam along
 // every row and one along every column through the same particles, EA =
 // 1e5 N, EI = 10 N m^2): rest shortens a beam edge, particle inserts a
@@ -133,9 +135,13 @@ struct Variant {
   bool low_rank = true;  // false: projective factors every change afresh (what it did before)
 };
 
-enum class Change { Cable, Remove, Rest, Particle };
+enum class Change { Cable, Remove, Rest, Particle, Passive };
 const char* change_name(Change c) {
-  return c == Change::Cable ? "cable" : c == Change::Remove ? "remove" : c == Change::Rest ? "rest" : "particle";
+  return c == Change::Cable    ? "cable"
+         : c == Change::Remove ? "remove"
+         : c == Change::Rest   ? "rest"
+         : c == Change::Particle ? "particle"
+                                 : "passive";
 }
 
 // The rep-th change of its kind: a different place each time.
@@ -152,6 +158,9 @@ void apply(Net& n, Change kind, int rep) {
       m.set_rest_length(a, b, 0.99 * m.edge_rest_length(a, b));
       break;
     }
+    case Change::Passive:  // multi-resolution (thesis 5.5.2.3): an interior particle and its elements leave the step
+      m.set_passive(n.at(r, c), true);
+      break;
     case Change::Particle: {
       if (n.beams()) {
         m.insert_particle(n.at(r, c), n.at(r, c + 1));
@@ -220,7 +229,7 @@ int usage(const char* argv0, int code) {
                "usage: %s [--sizes 16K,100K] [--reps N] [--changes cable,remove,rest,particle] [--integrators a,b,...]\n"
                "  --sizes        particle counts (K/M suffixes; the nearest square net; default 16384,100000), e.g. 1M\n"
                "  --reps         changes of each kind per integrator and size (default 5; medians)\n"
-               "  --changes      cable, remove, rest, particle (default: all)\n"
+               "  --changes      cable, remove, rest, particle (default: these four), passive\n"
                "  --integrators  leapfrog, symplectic_euler, velocity_verlet, midpoint, rk4, vie, projective,\n"
                "                 projective_refactor (every change factored afresh: the cost before the low-rank\n"
                "                 correction), mixed (its implicit phase VIE), mixed_projective (default: all)\n"
@@ -270,6 +279,7 @@ int main(int argc, char** argv) {
           else if (name == "remove") changes.push_back(Change::Remove);
           else if (name == "rest") changes.push_back(Change::Rest);
           else if (name == "particle") changes.push_back(Change::Particle);
+          else if (name == "passive") changes.push_back(Change::Passive);
           else throw std::runtime_error("unknown change '" + name + "'");
         }
       } else if (a == "--integrators") {
