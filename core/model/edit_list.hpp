@@ -41,6 +41,11 @@ struct EditList {
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return true;
   }
+  // Whether every write since the consumer restarted the list at
+  // `revision` is listed (it can be patched from the list), and whether
+  // none was made (it is up to date).
+  bool lists_since(std::uint64_t revision) const { return since == revision && !everything; }
+  bool clean_since(std::uint64_t revision) const { return lists_since(revision) && at.empty(); }
   void restart(std::uint64_t revision) {
     everything = false;
     at.clear();

@@ -15,6 +15,7 @@ void Particles::attach(UndoLog* undo) {
   for (auto* v : {&angular_velocity, &torque, &moment}) v->attach(undo);
   rot_stiffness.attach(undo);
   for (auto* v : {&rot_degree, &rotational_slot, &rotational, &integrated, &integrated_slot}) v->attach(undo);
+  rotational.watch(&rotational_edits);
 }
 
 ParticleId Particles::allocate(Vec3 x) {

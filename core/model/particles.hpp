@@ -3,6 +3,7 @@
 // deleted particles are recycled; a generation counter invalidates handles.
 #include <vector>
 
+#include "model/edit_list.hpp"
 #include "model/types.hpp"
 #include "model/undo_log.hpp"
 
@@ -47,6 +48,7 @@ struct Particles {
   LoggedVector<std::uint32_t> rot_degree;       // 6-DOF beam ends on the particle
   LoggedVector<std::uint32_t> rotational_slot;  // index in `rotational`, or kNone
   LoggedVector<ParticleId> rotational;          // particles with rot_degree > 0
+  EditList rotational_edits;  // its writes, for the solver's rotating chunk shares (edit_list.hpp)
   LoggedVector<ParticleId> integrated;          // the particles with active == 1
   LoggedVector<std::uint32_t> integrated_slot;  // index in `integrated`, or kNone
   std::size_t live = 0;

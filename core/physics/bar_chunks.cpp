@@ -14,8 +14,8 @@ std::uint32_t BarChunks::chunk_shift_for(std::size_t capacity) {
 
 bool BarChunks::current(const Model& m) const {
   const EditList& edits = m.bars.edits;
-  return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity() && edits.since == revision_ &&
-         !edits.everything && edits.at.empty();
+  return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity() &&
+         edits.clean_since(revision_);
 }
 
 std::size_t BarChunks::bar_count() const {
@@ -34,7 +34,7 @@ void BarChunks::update(Model& m) {
   if (current(m)) return;
   const EditList& edits = m.bars.edits;
   const bool patchable = model_ == &m && shift == chunk_shift_for(m.particles.capacity()) &&
-                         edits.since == revision_ && !edits.everything;
+                         edits.lists_since(revision_);
   if (!(patchable && patch(m))) derive(m);
   m.bars.edits.restart(m.revision);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "physics/bar_chunks.hpp"
+#include "physics/chunk_items.hpp"
 
 namespace tendril {
 
@@ -90,17 +91,8 @@ bool Beam6Chunks::patch(const Beam6Plan& from, std::size_t n_chunks) {
   affected_.erase(std::unique(affected_.begin(), affected_.end()), affected_.end());
   place_of_.resize(new_n);
   for (std::uint32_t c : affected_) {
-    items_.clear();
-    for (std::uint32_t at = begin[c]; at < end[c]; ++at)
-      if (!std::binary_search(touched.begin(), touched.end(), plan.elements[at])) items_.push_back(plan.elements[at]);
-    const std::size_t kept = items_.size();
-    for (std::uint32_t e : touched) {
-      if (e >= new_n) break;
-      const int n = chunks_of(from.i[e], from.j[e], shift_, at_chunk);
-      if (std::find(at_chunk, at_chunk + n, c) != at_chunk + n) items_.push_back(e);
-    }
-    // Both runs are in model order already: merge them.
-    std::inplace_merge(items_.begin(), items_.begin() + std::ptrdiff_t(kept), items_.end());
+    chunk_items(begin[c], end[c], [&](std::uint32_t at) { return plan.elements[at]; }, touched, new_n,
+                [&](std::uint32_t e) { return (from.i[e] >> shift_) == c || (from.j[e] >> shift_) == c; }, items_);
     if (items_.size() > limit[c] - begin[c]) return false;
     end[c] = begin[c];
     for (std::uint32_t e : items_) put(from, e, end[c]++);

@@ -17,15 +17,12 @@ void Beam6Plan::columns(Beam6Plan& out, const Beam6Plan& in, Each each) {
 }
 
 bool Beam6Plan::current(const Model& m) const {
-  const EditList& edits = m.beam6s.edits;
-  return model_ == &m && awake_ == m.beam6s.awake && edits.since == caught_up_ && !edits.everything &&
-         edits.at.empty();
+  return model_ == &m && awake_ == m.beam6s.awake && m.beam6s.edits.clean_since(caught_up_);
 }
 
 void Beam6Plan::update(Model& m) {
   if (current(m)) return;
-  const EditList& edits = m.beam6s.edits;
-  const bool patchable = model_ == &m && edits.since == caught_up_ && !edits.everything;
+  const bool patchable = model_ == &m && m.beam6s.edits.lists_since(caught_up_);
   if (!(patchable && patch(m))) derive(m);
   m.beam6s.edits.restart(m.revision);
   caught_up_ = m.revision;

@@ -5,15 +5,12 @@
 namespace tendril {
 
 bool CstPlan::current(const Model& m) const {
-  const EditList& edits = m.csts.edits;
-  return model_ == &m && awake_ == m.csts.awake && edits.since == caught_up_ && !edits.everything &&
-         edits.at.empty();
+  return model_ == &m && awake_ == m.csts.awake && m.csts.edits.clean_since(caught_up_);
 }
 
 void CstPlan::update(Model& m) {
   if (current(m)) return;
-  const EditList& edits = m.csts.edits;
-  const bool patchable = model_ == &m && awake_ == m.csts.awake && edits.since == caught_up_ && !edits.everything;
+  const bool patchable = model_ == &m && awake_ == m.csts.awake && m.csts.edits.lists_since(caught_up_);
   if (!(patchable && patch(m))) derive(m);
   m.csts.edits.restart(m.revision);
   caught_up_ = m.revision;

@@ -596,12 +596,14 @@ void Solver::prepare_beam6_chunks() const {
   const BarChunks& B = bar_chunks();
   beam6_chunks_.update(plan, B.shift, B.chunks.size());
   const std::vector<ParticleId>& bound = chunk_bounds();
-  // The rotating particles' shares follow their list itself (compared
-  // whole: 4 bytes a rotating particle; an element bound again may move a
-  // particle in it without moving the plan's generation).
-  const std::vector<ParticleId>& rotating = model_.particles.rotational.raw();
-  if (!rotating_chunk_shares_.follow(0, bound) || rotating != rotating_seen_) {
-    rotating_seen_ = rotating;
+  // The rotating particles' shares follow their list's own edits (an
+  // element bound again may move a particle in it without moving the
+  // plan's generation).
+  Particles& P = model_.particles;
+  const std::vector<ParticleId>& rotating = P.rotational.raw();
+  if (!rotating_chunk_shares_.follow(0, bound) || !P.rotational_edits.clean_since(rotating_caught_up_)) {
+    P.rotational_edits.restart(model_.revision);
+    rotating_caught_up_ = model_.revision;
     rotating_chunk_shares_.derive(0, bound, std::uint32_t(rotating.size()), [&](std::uint32_t e, ParticleId* at) {
       at[0] = rotating[e];
       return 1;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "physics/bar_chunks.hpp"
+#include "physics/chunk_items.hpp"
 #include "physics/equal_blocks.hpp"
 
 namespace tendril {
@@ -25,7 +26,7 @@ int chunks_of(const Hinge& h, std::uint32_t shift, std::uint32_t (&out)[3]) { re
 bool HingeChunks::current(const Model& m, std::uint32_t shift) const {
   const EditList& edits = m.hinges.edits;
   return model_ == &m && revision_ == m.revision && capacity_ == m.particles.capacity() && shift_ == shift &&
-         edits.since == revision_ && !edits.everything && edits.at.empty();
+         edits.clean_since(revision_);
 }
 
 std::size_t HingeChunks::item_count() const {
@@ -37,7 +38,7 @@ std::size_t HingeChunks::item_count() const {
 void HingeChunks::update(Model& m, std::uint32_t shift, std::size_t n_chunks) {
   if (current(m, shift)) return;
   const EditList& edits = m.hinges.edits;
-  const bool patchable = model_ == &m && shift_ == shift && edits.since == revision_ && !edits.everything;
+  const bool patchable = model_ == &m && shift_ == shift && edits.lists_since(revision_);
   if (!(patchable && patch(m, n_chunks))) derive(m, shift, n_chunks);
   m.hinges.edits.restart(m.revision);
 }
@@ -124,17 +125,11 @@ bool HingeChunks::patch(const Model& m, std::size_t n_chunks) {
   affected_.erase(std::unique(affected_.begin(), affected_.end()), affected_.end());
   place_of.resize(new_awake);
   for (std::uint32_t c : affected_) {
-    items_.clear();
-    for (std::uint32_t at = begin[c]; at < end[c]; ++at)
-      if (!std::binary_search(touched_.begin(), touched_.end(), hinge[at])) items_.push_back(hinge[at]);
-    const std::size_t kept = items_.size();
-    for (std::uint32_t e : touched_) {
-      if (e >= new_awake) break;
-      const int n = chunks_of(hinges[e], shift_, at_chunk);
-      if (std::find(at_chunk, at_chunk + n, c) != at_chunk + n) items_.push_back(e);
-    }
-    // Both runs are in model order already: merge them.
-    std::inplace_merge(items_.begin(), items_.begin() + std::ptrdiff_t(kept), items_.end());
+    chunk_items(begin[c], end[c], [&](std::uint32_t at) { return hinge[at]; }, touched_, new_awake,
+                [&](std::uint32_t e) {
+                  const Hinge& h = hinges[e];
+                  return (h.i >> shift_) == c || (h.j >> shift_) == c || (h.k >> shift_) == c;
+                }, items_);
     if (items_.size() > limit[c] - begin[c]) return false;
     end[c] = begin[c];
     for (std::uint32_t e : items_) put(hinges[e], e, end[c]++);

@@ -466,7 +466,7 @@ class Solver {
   // 6-DOF elements, rotating particles (and their ids, chunk by chunk).
   mutable ElementShares cst_chunk_shares_, corner_chunk_shares_, rotating_chunk_shares_;
   mutable std::vector<ParticleId> rotating_by_chunk_;
-  mutable std::vector<ParticleId> rotating_seen_;  // the rotating list rotating_chunk_shares_ was derived from
+  mutable std::uint64_t rotating_caught_up_ = ~std::uint64_t(0);  // when rotating_chunk_shares_ read the list
   mutable std::vector<ParticleId> chunk_bound_;  // chunk_bounds
   mutable std::vector<std::uint32_t> thread_bad_hinge_;  // per thread: its first degenerate hinge
   bool projective_low_rank_ = true;
