@@ -31,25 +31,58 @@ void add_term(Add& add, const std::vector<int>& row, const ParticleId (&ps)[N], 
 
 }  // namespace
 
-std::array<std::vector<int>, 3> ProjectiveSystem::rows_of(const Model& m, std::array<int, 3>& count) const {
+ProjectiveSystem::Rows ProjectiveSystem::rows_of(const Model& m, int a) {
   const Particles& P = m.particles;
-  std::array<std::vector<int>, 3> row;
-  count = {};
-  for (int a = 0; a < 3; ++a) {
-    row[a].assign(P.capacity(), -1);
-    for (ParticleId p : P.integrated.raw())
-      if (!(P.lock[p] & (kLockX << a))) row[a][p] = count[a]++;
+  Rows r;
+  r.row.assign(P.capacity(), -1);
+  r.left.assign(P.capacity(), -1);
+  for (ParticleId p : P.integrated.raw())
+    if (!(P.lock[p] & (kLockX << a))) r.row[p] = r.count++;
+  return r;
+}
+
+ProjectiveSystem::Rows ProjectiveSystem::followed(const Model& m, const Axis& s, int a) {
+  const Particles& P = m.particles;
+  const std::size_t n = P.capacity();
+  Rows r = s.rows;
+  r.row.resize(n, -1);
+  r.left.resize(n, -1);
+  std::vector<char> here(n, 0);
+  for (ParticleId p : P.integrated.raw())
+    if (!(P.lock[p] & (kLockX << a))) here[p] = 1;
+  // Departures first, so that a particle in a slot freed by this very change
+  // finds the row to take. A row left keeps the diagonal it has in the
+  // matrix the correction starts from, so that only its couplings change.
+  const Eigen::Index n0 = s.A.rows();
+  for (std::size_t p = 0; p < n; ++p) {
+    const int q = r.row[p];
+    if (q < 0 || here[p]) continue;
+    r.left[p] = q;
+    r.row[p] = -1;
+    r.vacant.emplace_back(q, q < n0 ? s.A.coeff(q, q) : s.grown[q - n0]);
   }
-  return row;
+  for (ParticleId p : P.integrated.raw()) {  // arrivals, in `integrated` order
+    if (!here[p] || r.row[p] >= 0) continue;
+    if (const int q = r.left[p]; q >= 0) {
+      r.row[p] = q;
+      r.left[p] = -1;
+      r.vacant.erase(std::find_if(r.vacant.begin(), r.vacant.end(), [&](const auto& v) { return v.first == q; }));
+    } else {
+      r.row[p] = r.count++;
+    }
+  }
+  return r;
 }
 
 template <class Add>
-void ProjectiveSystem::terms(const Model& m, const std::vector<int>& row, const Vec3* x, double inv_dt2,
+void ProjectiveSystem::terms(const Model& m, const Rows& rows, const Vec3* x, double inv_dt2,
                              const std::vector<double>& diagonal, Add&& t) const {
   const Particles& P = m.particles;
+  const std::vector<int>& row = rows.row;
   const double gf = key_.geometric_factor;
   for (ParticleId p : P.integrated.raw())
     if (row[p] >= 0) t(row[p], row[p], mass_[p] * inv_dt2 + diagonal[p]);
+  for (const auto& [r, d] : rows.vacant) t(r, r, d);
   for (const Bar* bp = m.bars.awake_begin(); bp != m.bars.awake_end(); ++bp) {  // dormant ones never act
     const Bar& b = *bp;
     const double l = (x[b.j] - x[b.i]).norm(), k = b.EA / b.rest_length;
@@ -98,13 +131,12 @@ void ProjectiveSystem::terms(const Model& m, const std::vector<int>& row, const 
   }
 }
 
-Eigen::SparseMatrix<double> ProjectiveSystem::assemble(const Model& m, const std::vector<int>& row, int rows,
-                                                       const Vec3* x, double inv_dt2,
-                                                       const std::vector<double>& diagonal) const {
+Eigen::SparseMatrix<double> ProjectiveSystem::assemble(const Model& m, const Rows& rows, const Vec3* x,
+                                                       double inv_dt2, const std::vector<double>& diagonal) const {
   Triplets t;
   t.reserve(m.particles.integrated.size() + 4 * m.bars.size() + 9 * m.hinges.size() + 4 * m.beam6s.size());
-  terms(m, row, x, inv_dt2, diagonal, [&](int r, int c, double v) { t.emplace_back(r, c, v); });
-  Eigen::SparseMatrix<double> A(rows, rows);
+  terms(m, rows, x, inv_dt2, diagonal, [&](int r, int c, double v) { t.emplace_back(r, c, v); });
+  Eigen::SparseMatrix<double> A(rows.count, rows.count);
   A.setFromTriplets(t.begin(), t.end());  // duplicates summed in the order of terms()
   return A;
 }
@@ -135,19 +167,18 @@ void ProjectiveSystem::factor(const Key& key, std::uint64_t revision, const Mode
   mass_.assign(mass.begin(), mass.end());
   known_.assign(n, 0);
   for (ParticleId p : m.particles.integrated.raw()) known_[p] = 1;
-  std::array<int, 3> count{};
-  std::array<std::vector<int>, 3> row = rows_of(m, count);
   for (int a = 0; a < 3; ++a) {
+    Rows rows = rows_of(m, a);
     int same = -1;
     for (int b = 0; b < a && same < 0; ++b)
-      if (axis_[b]->row == row[a]) same = b;
+      if (axis_[b]->rows == rows) same = b;
     if (same >= 0) {
       axis_[a] = axis_[same];
       continue;
     }
     auto s = std::make_shared<Axis>();
-    s->row = std::move(row[a]);
-    s->A = assemble(m, s->row, count[a], x, inv_dt2, diagonal);
+    s->rows = std::move(rows);
+    s->A = assemble(m, s->rows, x, inv_dt2, diagonal);
     factor_axis(*s, a);
     axis_[a] = s;
   }
@@ -161,22 +192,23 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
                               const std::vector<double>& diagonal) {
   const std::size_t n = m.particles.capacity(), had = reference_.size();
   if (!factored_ || !(key_ == key) || n < had) return false;
-  std::array<int, 3> count{};
-  std::array<std::vector<int>, 3> row = rows_of(m, count);
-  // Every row stays where it was; new ones (particles added, or integrated
-  // again) come after them, which the particles' `integrated` order gives.
+  // Every row stays where it was (projective.hpp); axes that shared a
+  // system must still share it, the factor being one (axes apart may stay
+  // apart with equal rows).
+  std::array<Rows, 3> row;
   for (int a = 0; a < 3; ++a) {
-    const std::vector<int>& old = axis_[a]->row;
-    for (std::size_t p = 0; p < had; ++p)
-      if (old[p] >= 0 && row[a][p] != old[p]) return false;
+    row[a] = followed(m, *axis_[a], a);
     for (int b = 0; b < a; ++b)
-      if ((axis_[b] == axis_[a]) != (row[b] == row[a])) return false;
+      if (axis_[b] == axis_[a] && !(row[b] == row[a])) return false;
   }
   factored_ = false;  // until every axis follows
-  // New particles: their reference is where they are, their mass this step's.
+  // New particles: their reference is where they are, their mass this step's;
+  // one that left is new when it comes back (or another takes its slot).
   reference_.insert(reference_.end(), x + had, x + n);
   mass_.resize(n, 0.0);
   known_.resize(n, 0);
+  for (std::size_t p = 0; p < had; ++p)
+    if (!m.particles.active[p]) known_[p] = 0;
   for (ParticleId p : m.particles.integrated.raw())
     if (follow_mass || !known_[p]) {
       mass_[p] = mass[p];
@@ -186,19 +218,19 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
   for (int a = 0; a < 3; ++a) {
     if (shared_before(a)) continue;  // done with that axis
     Axis& s = *axis_[a];
-    s.row = std::move(row[a]);
+    s.rows = std::move(row[a]);
     // The new matrix minus the base (the old one, and the diagonal of rows
     // added since), D: the terms again at the same positions, summed into
     // the old pattern in the order assemble() sums them, so that an
     // unchanged entry repeats bit for bit; entries outside it (a new cable,
     // a new row) apart. Cheaper than assembling and subtracting (no sort).
     const Eigen::SparseMatrix<double>& A0 = s.A;
-    const int n0 = int(A0.rows()), rows = count[a], grown = int(s.grown.size());
+    const int n0 = int(A0.rows()), rows = s.rows.count, grown = int(s.grown.size());
     const int* outer = A0.outerIndexPtr();
     const int* inner = A0.innerIndexPtr();
     std::vector<double> d(std::size_t(A0.nonZeros()), 0.0), new_diagonal(std::size_t(rows - n0), 0.0);
     Triplets extra;
-    terms(m, s.row, reference_.data(), inv_dt2, diagonal, [&](int r, int c, double v) {
+    terms(m, s.rows, reference_.data(), inv_dt2, diagonal, [&](int r, int c, double v) {
       if (r >= n0 || c >= n0) {
         if (r == c) new_diagonal[std::size_t(r - n0)] += v;
         else extra.emplace_back(r, c, v);
@@ -251,7 +283,7 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
       if (!s.change.set(s.factor, s.grown, s.changed, C)) return false;
     } else {
       const std::vector<int> changed = s.changed;
-      s.A = assemble(m, s.row, rows, reference_.data(), inv_dt2, diagonal);
+      s.A = assemble(m, s.rows, reference_.data(), inv_dt2, diagonal);
       factor_axis(s, a);
       s.changed = changed;  // the budget counts from the last factor() in both ways
     }
@@ -279,10 +311,11 @@ void ProjectiveSystem::solve(const Model& m, Vec3* rhs) {
     for (int b = a; b < 3; ++b)
       if (axis_[b] == axis_[a]) axes[count++] = b;
     if (s.b.cols() != count) s.b = Eigen::MatrixXd::Zero(s.b.rows(), count);
-    const std::vector<int>& row = s.row;
+    const std::vector<int>& row = s.rows.row;
     for (ParticleId p : integrated)
       if (row[p] >= 0)
         for (int c = 0; c < count; ++c) s.b(row[p], c) = rhs[p][axes[c]];
+    for (const auto& v : s.rows.vacant) s.b.row(v.first).setZero();  // decoupled: stays zero
     s.change.solve(s.factor, s.grown, s.b, s.scratch);
     for (ParticleId p : integrated)
       for (int c = 0; c < count; ++c) rhs[p][axes[c]] = row[p] >= 0 ? s.b(row[p], c) : 0.0;

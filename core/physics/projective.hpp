@@ -25,18 +25,22 @@
 // differ, and the old factor solves the new matrix exactly through a
 // low-rank correction (low_rank_solve.hpp) - a new cable costs two solves,
 // not a factorisation. New particles' rows come after the others and join
-// the correction. Fictitious masses stay those of the factorisation (a new
-// particle's its first); physical ones are followed. A full factorisation
-// at the current positions comes when a lock, dt or the mass mode changes,
-// a particle leaves (the rows after it move), or the changed rows since the
-// last one exceed nnz(L) / n, where the correction would cost more per
-// solve than the triangular solves themselves.
+// the correction. A particle that leaves an axis (made passive, deleted,
+// locked) keeps its row there, decoupled: its diagonal alone, its right
+// side zero; it takes the row again if it comes back, and a new particle in
+// its slot takes it too. Fictitious masses stay those of the factorisation
+// (a new or returning particle's its first); physical ones are followed. A
+// full factorisation at the current positions comes when dt or the mass
+// mode changes, a lock splits axes that shared a system, or the changed
+// rows since the last one exceed nnz(L) / n, where the correction would
+// cost more per solve than the triangular solves themselves.
 // A fixed point is an equilibrium whatever the weights: they only decide how
 // fast the iterations get there.
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "model/model.hpp"
@@ -67,9 +71,10 @@ class ProjectiveSystem {
   // reference() with mass() - where `follow_mass` (physical masses) the
   // particles whose `mass` changed take it - and `diagonal` (CST at
   // reference()). New particles (after the old ones in every axis' rows)
-  // take their position x and `mass` into reference() and mass(). False when it needs factor(): another key, other rows,
-  // too many changed rows, or a matrix the correction would not keep
-  // positive definite.
+  // take their position x and `mass` into reference() and mass(). False
+  // when it needs factor(): another key, axes that shared a system no
+  // longer sharing it, too many changed rows, or a matrix the correction
+  // would not keep positive definite.
   bool update(const Key& key, std::uint64_t revision, const Model& m, const Vec3* x, const std::vector<double>& mass,
               bool follow_mass, double inv_dt2, const std::vector<double>& diagonal);
   // dx for the free coordinates of every particle: rhs -> increments, in place.
@@ -79,6 +84,7 @@ class ProjectiveSystem {
   // Whether p was integrated at factor() or an update: reference() and
   // mass() hold its place and mass.
   bool known(ParticleId p) const { return p < known_.size() && known_[p]; }
+  int rows(int axis) const { return axis_[axis]->rows.count; }  // left ones included
   std::uint64_t factorizations() const { return factorizations_; }
   std::uint64_t updates() const { return updates_; }
   // Off: update() factors the updated matrix afresh instead of correcting
@@ -88,8 +94,15 @@ class ProjectiveSystem {
 
  private:
   using Factor = LdltFactor;
+  struct Rows {  // the rows of one axis
+    std::vector<int> row;   // particle -> row, or -1 (fixed, passive, gone)
+    std::vector<int> left;  // particle -> the row it left since factor(), or -1
+    std::vector<std::pair<int, double>> vacant;  // rows left, decoupled, and the diagonal each keeps
+    int count = 0;
+    bool operator==(const Rows&) const = default;
+  };
   struct Axis {  // the system of one axis; axes with equal rows share one
-    std::vector<int> row;          // particle -> row, or -1 (fixed)
+    Rows rows;
     Eigen::SparseMatrix<double> A;  // what `factor` factors
     Factor factor;
     Eigen::VectorXd grown;         // rows added since factor(): their diagonal
@@ -100,13 +113,14 @@ class ProjectiveSystem {
     RowsOfColumns scratch;             // the forward half of a solve (low_rank_solve.hpp)
   };
   template <class Add>  // every matrix entry's terms, in a fixed order, through add(row, column, value)
-  void terms(const Model& m, const std::vector<int>& row, const Vec3* x, double inv_dt2,
-             const std::vector<double>& diagonal, Add&& add) const;
-  Eigen::SparseMatrix<double> assemble(const Model& m, const std::vector<int>& row, int rows, const Vec3* x,
-                                       double inv_dt2, const std::vector<double>& diagonal) const;
+  void terms(const Model& m, const Rows& rows, const Vec3* x, double inv_dt2, const std::vector<double>& diagonal,
+             Add&& add) const;
+  Eigen::SparseMatrix<double> assemble(const Model& m, const Rows& rows, const Vec3* x, double inv_dt2,
+                                       const std::vector<double>& diagonal) const;
   void factor_axis(Axis& s, int a);
   bool shared_before(int a) const;  // axis a's system is an earlier axis's too
-  std::array<std::vector<int>, 3> rows_of(const Model& m, std::array<int, 3>& count) const;
+  static Rows rows_of(const Model& m, int a);                      // numbered afresh, in `integrated` order
+  static Rows followed(const Model& m, const Axis& s, int a);      // s's rows kept, arrivals after them
   Key key_;
   std::uint64_t revision_ = 0;
   bool factored_ = false;
