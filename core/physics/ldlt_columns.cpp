@@ -47,6 +47,24 @@ void forward_columns(const LdltFactor& f, const Eigen::Ref<const Eigen::MatrixXd
 
 Eigen::VectorXd inverse_diagonal(const LdltFactor& f) { return f.vectorD().cwiseInverse(); }
 
+std::vector<int> forward_reach(const LdltFactor& f) {
+  const Eigen::SparseMatrix<double>& L = f.matrixL().nestedExpression();
+  const Eigen::Index n = L.cols();
+  const int* outer = L.outerIndexPtr();
+  const int* inner = L.innerIndexPtr();
+  // A column's parent is its first row below the diagonal; parents come
+  // after their children, so the depths fill from the root down.
+  std::vector<int> depth(std::size_t(n), 1);
+  for (Eigen::Index j = n - 1; j >= 0; --j)
+    if (const int k = below(L, j); k < outer[j + 1]) depth[std::size_t(j)] += depth[std::size_t(inner[k])];
+  std::vector<int> reach(static_cast<std::size_t>(n));
+  for (Eigen::Index r = 0; r < n; ++r) {
+    const Eigen::Index p = f.permutationP().size() > 0 ? f.permutationP().indices()[r] : r;
+    reach[std::size_t(r)] = depth[std::size_t(p)];
+  }
+  return reach;
+}
+
 void backward_columns(const LdltFactor& f, const Eigen::VectorXd& inverse_d, RowsOfColumns& Y,
                       Eigen::Ref<Eigen::MatrixXd> X) {
   const Eigen::Index n = Y.rows(), m = Y.cols();

@@ -8,6 +8,7 @@
 // z with one factor, and a change's correction its new unit columns
 // (projective.hpp, low_rank_solve.hpp).
 #include <Eigen/SparseCholesky>
+#include <vector>
 
 namespace tendril {
 
@@ -27,5 +28,10 @@ void forward_columns(const LdltFactor& f, const Eigen::Ref<const Eigen::MatrixXd
 void backward_columns(const LdltFactor& f, const Eigen::VectorXd& inverse_d, RowsOfColumns& Y,
                       Eigen::Ref<Eigen::MatrixXd> X);
 Eigen::VectorXd inverse_diagonal(const LdltFactor& f);  // D^-1, as Eigen's solve takes it
+
+// Per row r of the factored matrix: how many rows L^-1 P e_r can have
+// nonzero (r's ancestors in the elimination tree, itself included), what a
+// forward solve of its unit column writes.
+std::vector<int> forward_reach(const LdltFactor& f);
 
 }  // namespace tendril

@@ -149,12 +149,8 @@ void ProjectiveSystem::factor_axis(Axis& s, int a) {
   s.change.clear(s.factor);
   s.changed.clear();
   s.grown.resize(0);
-  // A changed row costs 2 n flops per solve on top of the triangular solves'
-  // 4 nnz(L): beyond nnz(L) / n rows a factorisation pays (and Z, n per row,
-  // would outgrow L). At least 16, so that small models refactor rarely too.
-  const std::size_t n = std::size_t(std::max<Eigen::Index>(1, s.A.rows()));
-  const std::size_t nnzL = std::size_t(s.factor.matrixL().nestedExpression().nonZeros());
-  s.budget = std::clamp<std::size_t>(nnzL / n, 16, 256);
+  s.reach = forward_reach(s.factor);
+  s.entries = std::size_t(s.factor.matrixL().nestedExpression().nonZeros() + s.A.rows());  // L's unit diagonal apart
   s.b.resize(s.A.rows(), s.b.cols());
 }
 
@@ -262,7 +258,7 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
     for (int r = n0; r < rows; ++r) fresh[std::size_t(r)] = 1;
     for (std::size_t r = 0; r < fresh.size(); ++r)
       if (fresh[r] && !in[r]) s.changed.push_back(int(r));
-    if (s.changed.size() > s.budget) return false;
+    if (outgrown(s)) return false;
     s.b.conservativeResize(rows, s.b.cols());
     if (low_rank) {
       const Eigen::Index k = Eigen::Index(s.changed.size());
@@ -282,16 +278,33 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
           C(place[std::size_t(e.row())], place[std::size_t(e.col())]) += e.value();
       if (!s.change.set(s.factor, s.grown, s.changed, C)) return false;
     } else {
-      const std::vector<int> changed = s.changed;
+      std::vector<int> changed = std::move(s.changed), reach = std::move(s.reach);
+      const std::size_t entries = s.entries;
       s.A = assemble(m, s.rows, reference_.data(), inv_dt2, diagonal);
       factor_axis(s, a);
-      s.changed = changed;  // the budget counts from the last factor() in both ways
+      // outgrown() counts from the last factor() in both ways
+      s.changed = std::move(changed), s.reach = std::move(reach), s.entries = entries;
     }
   }
   revision_ = revision;
   factored_ = true;
   ++updates_;
   return true;
+}
+
+// A solve reads L twice (forward, backward) and the correction each changed
+// row's column of G twice (y_T, then f - G w) and C and (I + S C)^-1 once:
+// once the correction outweighs L a factorisation pays, and beyond 256 rows
+// setting it (k^3) does too. The first 16 rows are always followed, so that
+// small models refactor rarely too. A membrane, whose matrix is almost
+// diagonal, follows far more rows than a net, whose columns of G are long.
+bool ProjectiveSystem::outgrown(const Axis& s) {
+  const std::size_t k = s.changed.size();
+  if (k <= 16) return false;
+  if (k > 256) return true;
+  std::size_t read = k * k;
+  for (int r : s.changed) read += r < int(s.reach.size()) ? std::size_t(s.reach[std::size_t(r)]) : 1;
+  return read > s.entries;
 }
 
 bool ProjectiveSystem::shared_before(int a) const {

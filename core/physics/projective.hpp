@@ -32,8 +32,8 @@
 // (a new or returning particle's its first); physical ones are followed. A
 // full factorisation at the current positions comes when dt or the mass
 // mode changes, a lock splits axes that shared a system, or the changed
-// rows since the last one exceed nnz(L) / n, where the correction would
-// cost more per solve than the triangular solves themselves.
+// rows since the last one (more than 16) would cost more per solve than
+// the triangular solves themselves (projective.cpp, factor_axis).
 // A fixed point is an equilibrium whatever the weights: they only decide how
 // fast the iterations get there.
 #include <Eigen/SparseCholesky>
@@ -108,7 +108,8 @@ class ProjectiveSystem {
     Eigen::VectorXd grown;         // rows added since factor(): their diagonal
     LowRankSolve change;           // diag(A, grown) + change: the current matrix
     std::vector<int> changed;      // rows changed since factor(), in order
-    std::size_t budget = 0;        // how many may before factor() pays
+    std::vector<int> reach;        // row -> the nonzeros of its column of L^-1 P (forward_reach)
+    std::size_t entries = 0;       // of L and D
     Eigen::MatrixXd b;                 // a column per axis that shares it
     RowsOfColumns scratch;             // the forward half of a solve (low_rank_solve.hpp)
   };
@@ -119,6 +120,7 @@ class ProjectiveSystem {
                                        const std::vector<double>& diagonal) const;
   void factor_axis(Axis& s, int a);
   bool shared_before(int a) const;  // axis a's system is an earlier axis's too
+  static bool outgrown(const Axis& s);  // its changed rows cost more than a factorisation saves
   static Rows rows_of(const Model& m, int a);                      // numbered afresh, in `integrated` order
   static Rows followed(const Model& m, const Axis& s, int a);      // s's rows kept, arrivals after them
   Key key_;

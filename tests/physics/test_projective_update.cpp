@@ -83,8 +83,8 @@ double largest_difference(const Run& a, const Run& b) {
 }  // namespace
 
 TEST_CASE("projective: a change every 4 steps is followed by the old factor, as a fresh factorisation would") {
-  // 8 changes touch 16 rows, the budget of a system this small (at least
-  // 16): every one is followed without a factorisation.
+  // 8 changes touch 16 rows, which are always followed (projective.cpp,
+  // outgrown): every one without a factorisation.
   const Run cheap = run(true, 8, 4), fresh = run(false, 8, 4);
   CHECK(cheap.factorizations == 1);
   CHECK(cheap.updates == 8);
@@ -98,8 +98,10 @@ TEST_CASE("projective: a change every 4 steps is followed by the old factor, as 
 }
 
 TEST_CASE("projective: the ninth change outgrows the budget and refactors, in both ways alike") {
+  // 18 rows: their columns of L^-1 P and C would read more than the net's
+  // L and D, which a factorisation gives back.
   const Run cheap = run(true, 10, 3), fresh = run(false, 10, 3);
-  CHECK(cheap.factorizations == 2);  // the first, and the ninth change's (18 rows > 16)
+  CHECK(cheap.factorizations == 2);  // the first, and the ninth change's
   CHECK(cheap.updates == 9);
   CHECK(fresh.factorizations == 2);
   CHECK(fresh.updates == 9);
@@ -205,6 +207,32 @@ TEST_CASE("projective: a row left stays decoupled: the followed system solves as
   CHECK(followed.rows(0) == 101);
   CHECK(followed.factorizations() == 1);
   CHECK(followed.updates() == 4);
+}
+
+TEST_CASE("projective: a matrix without couplings follows more than 16 changed rows, its columns being short") {
+  // 1000 particles each hung from its own anchor: L has no entry below its
+  // diagonal, a changed row's column of L^-1 P is the row alone, and the
+  // correction reads k + k^2 entries against L's and D's 1000.
+  Model m;
+  std::vector<std::pair<ParticleId, ParticleId>> hung;
+  for (int k = 0; k < 1000; ++k) {
+    const ParticleId anchor = m.add_particle(Vec3(k, 0, 1)), p = m.add_particle(Vec3(k, 0, 0));
+    m.set_lock(anchor, kLockTranslation);
+    m.add_cable(anchor, p, Section{1e5, 0, 0, 0});
+    hung.emplace_back(anchor, p);
+  }
+  const std::vector<Vec3> x(m.particles.position.begin(), m.particles.position.end());
+  const std::vector<double> mass(x.size(), 2.0), diagonal(x.size(), 0.0);
+  const ProjectiveSystem::Key key{&m, 0.1, 0.1, 1, 1, 0};
+  ProjectiveSystem s;
+  s.factor(key, 1, m, x.data(), mass, 1.0, diagonal);
+  int followed = 0;
+  for (int k = 0; k < 40; ++k) {
+    m.set_rest_length(hung[std::size_t(k)].first, hung[std::size_t(k)].second, 0.9);  // its row's diagonal
+    followed += s.update(key, 2 + std::uint64_t(k), m, x.data(), mass, false, 1.0, diagonal);
+  }
+  CHECK(followed == 31);  // k + k^2 <= 1000 up to 31 rows; the 32nd asks for a factorisation
+  CHECK(s.factorizations() == 1);
 }
 
 TEST_CASE("projective: a deleted particle is followed; one added into its slot takes its row") {
