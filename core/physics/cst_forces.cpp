@@ -343,25 +343,13 @@ void Solver::accumulate_cst_forces(const Vec3* x, Vec3* F, double* S) const {
   });
 }
 
-// The fused step's triangles: the plan, the corners' sums, and each
-// chunk's share of the triangles and of the projected corners (those of
-// its particles), derived before the pass, since the pass runs on threads.
+// The fused step's triangles: the plan, and each chunk's share of the
+// triangles and of the projected corners (those of its particles), brought
+// up to date before the pass, since the pass runs on threads.
 void Solver::prepare_cst_chunks() const {
   cst_plan_.update(model_);
-  const CstPlan& plan = cst_plan_;
-  const std::vector<ParticleId>& bound = chunk_bounds();
-  const std::uint64_t source = plan.generation();
-  if (!cst_chunk_shares_.follow(source, bound))
-    cst_chunk_shares_.derive(source, bound, std::uint32_t(plan.i.size()), [&](std::uint32_t e, ParticleId* at) {
-      at[0] = plan.i[e], at[1] = plan.j[e], at[2] = plan.k[e];
-      return 3;
-    });
-  if (!corner_chunk_shares_.follow(source, bound))
-    corner_chunk_shares_.derive(source, bound, std::uint32_t(plan.corner.size()),
-                                [&](std::uint32_t s, ParticleId* at) {
-                                  at[0] = plan.corner[s];
-                                  return 1;
-                                });
+  const BarChunks& B = bar_chunks();
+  cst_chunks_.update(cst_plan_, B.shift, B.chunks.size());
 }
 
 namespace {
@@ -380,13 +368,13 @@ void Solver::chunk_cst_sums(std::uint32_t chunk, const Vec3* x, ForceSum* sums) 
   const ParticleId base = ParticleId(chunk) << shift;
   const Owned<true> own{base, base + (ParticleId(1) << shift)};
   const ChunkSink out{sums, base};
-  const ElementShares &tri = cst_chunk_shares_, &corners = corner_chunk_shares_;
+  const CstChunks& C = cst_chunks_;
   if (chunk_corner_scratch.size() < (std::size_t(1) << shift)) chunk_corner_scratch.resize(std::size_t(1) << shift);
   const CornerRows corner_sums{chunk_corner_scratch.data(), base};
-  cst_forces<true>(cst_plan_, model_.csts.awake_begin(), tri.items.data() + tri.begin[chunk],
-                   tri.begin[chunk + 1] - tri.begin[chunk], own, x, settings.geometric_factor, out, corner_sums);
-  project_corners<true>(cst_plan_, corners.items.data() + corners.begin[chunk],
-                        corners.begin[chunk + 1] - corners.begin[chunk], own, out, corner_sums);
+  cst_forces<true>(cst_plan_, model_.csts.awake_begin(), C.triangles.data() + C.begin[chunk],
+                   C.end[chunk] - C.begin[chunk], own, x, settings.geometric_factor, out, corner_sums);
+  project_corners<true>(cst_plan_, C.corners.data() + C.corner_begin[chunk],
+                        C.corner_end[chunk] - C.corner_begin[chunk], own, out, corner_sums);
 }
 
 }  // namespace tendril

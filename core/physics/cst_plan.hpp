@@ -6,9 +6,11 @@
 // together and in one compact array (the fused step sums a chunk's corners
 // in rows by particle, cst_forces.cpp). It follows the triangles' own
 // edit list (m.csts.edits): a change elsewhere in the model (a cable, a
-// new particle) leaves it as it is, a triangle whose values changed but
-// whose corners and projected corners did not is written again in place,
-// and any other change of the awake triangles derives it again.
+// new particle) leaves it as it is, and each triangle written, woken or
+// put to sleep is written again in place. A corner keeps its slot while no
+// triangle projects onto it (its sums stay zero, so it adds nothing), so
+// that it finds it again when one does; the plan is derived again once
+// such slots are more than half.
 #include <cstdint>
 #include <vector>
 
@@ -34,6 +36,16 @@ struct CstPlan {
   // shares of the triangles and corners are derived from), not when a
   // triangle's stresses alone were written again.
   std::uint64_t generation() const { return generation_; }
+  // Moves at every update; patched() lists the entries the last one wrote
+  // (ascending; past the plan's end: triangles gone to sleep or removed)
+  // and patched_ends() their corners before it (3 each, kNone for an entry
+  // that is new), when it moved from patched_from(), else patched_from()
+  // matches no stamp. Slots from first_new_slot() on are new in it.
+  std::uint64_t values() const { return values_; }
+  std::uint64_t patched_from() const { return patched_from_; }
+  const std::vector<std::uint32_t>& patched() const { return touched_; }
+  const std::vector<ParticleId>& patched_ends() const { return old_ends_; }
+  std::uint32_t first_new_slot() const { return first_new_slot_; }
 
   // Per awake triangle, in the model's order.
   std::vector<ParticleId> i, j, k;
@@ -48,15 +60,18 @@ struct CstPlan {
   std::vector<ParticleId> corner;  // per slot: the corner
 
  private:
-  // Triangle e's values but its slots; false when its corners or which of
-  // them are projected differ from the entry's (the slots would move).
-  bool put(const Cst& t, std::size_t e, bool check);
+  void put(const Cst& t, std::size_t e);  // triangle e's values but its slots
+  void add_slots(std::size_t e, int way);  // entry e's corners join (+1) or leave (-1) their slots
   bool patch(const Model& m);
   const Model* model_ = nullptr;
   std::uint64_t caught_up_ = ~std::uint64_t(0);  // the revision m.csts.edits was restarted at
-  std::size_t awake_ = 0;
-  std::uint64_t generation_ = 0;
+  std::uint64_t generation_ = 0, values_ = 0, patched_from_ = ~std::uint64_t(0);
   std::vector<std::uint32_t> touched_;
+  std::vector<ParticleId> old_ends_;
+  std::uint32_t first_new_slot_ = 0;
+  std::vector<std::uint32_t> slot_of_;  // per particle: its slot, or kNoSlot
+  std::vector<std::uint32_t> users_;    // per slot: the corners of projected triangles on it
+  std::size_t unused_ = 0;              // slots without users
 };
 
 }  // namespace tendril

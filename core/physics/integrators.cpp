@@ -638,8 +638,8 @@ double Solver::fused_step_bytes() const {
   double membranes = 0;
   if (model_.csts.awake > 0) {
     prepare_cst_chunks();
-    membranes = double(cst_chunk_shares_.items.size()) * (4 + 12 + 16 + 8 + 1 + 12 + 1) +
-                double(corner_chunk_shares_.items.size()) * (4 + 4 + 1 + 72 + 72);
+    membranes = double(cst_chunks_.triangle_count()) * (4 + 12 + 16 + 8 + 1 + 12 + 1) +
+                double(cst_chunks_.corner_count()) * (4 + 4 + 1 + 72 + 72);
   }
   // Per 6-DOF element of a chunk the chunk plan's ends, beam-end frames
   // and constants (a block in a run of the same frames or constants reads

@@ -28,6 +28,7 @@
 #include "physics/beam6_chunks.hpp"
 #include "physics/beam6_plan.hpp"
 #include "physics/chunk_balance.hpp"
+#include "physics/cst_chunks.hpp"
 #include "physics/cst_plan.hpp"
 #include "physics/element_shares.hpp"
 #include "physics/hinge_chunks.hpp"
@@ -425,6 +426,7 @@ class Solver {
   // pass's sums of the projected corners, one per slot (scratch, zero
   // between calls; the fused step sums a chunk's in a scratch of its own).
   mutable CstPlan cst_plan_;
+  mutable CstChunks cst_chunks_;  // the same chunk by chunk, for the fused step
   mutable std::vector<CstCornerSums> cst_corner_sums_;
   // The oriented quads of every patch under pressure, with their pressure,
   // derived again when the model's revision moves.
@@ -462,9 +464,9 @@ class Solver {
   mutable std::uint64_t chunk_round_ = 0;
   mutable std::vector<ParticleId> element_bound_;            // element_bounds
   mutable ElementShares hinge_shares_, beam6_shares_, cst_shares_;
-  // The fused step's shares, by chunk: CST triangles, projected corners,
-  // 6-DOF elements, rotating particles (and their ids, chunk by chunk).
-  mutable ElementShares cst_chunk_shares_, corner_chunk_shares_, rotating_chunk_shares_;
+  // The fused step's shares of the rotating particles by chunk (and their
+  // ids, chunk by chunk).
+  mutable ElementShares rotating_chunk_shares_;
   mutable std::vector<ParticleId> rotating_by_chunk_;
   mutable std::uint64_t rotating_caught_up_ = ~std::uint64_t(0);  // when rotating_chunk_shares_ read the list
   mutable std::vector<ParticleId> chunk_bound_;  // chunk_bounds
