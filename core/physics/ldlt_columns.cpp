@@ -47,22 +47,47 @@ void forward_columns(const LdltFactor& f, const Eigen::Ref<const Eigen::MatrixXd
 
 Eigen::VectorXd inverse_diagonal(const LdltFactor& f) { return f.vectorD().cwiseInverse(); }
 
-std::vector<int> forward_reach(const LdltFactor& f) {
+std::vector<int> elimination_parents(const LdltFactor& f) {
+  // A column's parent is its first row below the diagonal.
   const Eigen::SparseMatrix<double>& L = f.matrixL().nestedExpression();
-  const Eigen::Index n = L.cols();
+  std::vector<int> parent(std::size_t(L.cols()), -1);
+  for (Eigen::Index j = 0; j < L.cols(); ++j)
+    if (const int k = below(L, j); k < L.outerIndexPtr()[j + 1]) parent[std::size_t(j)] = L.innerIndexPtr()[k];
+  return parent;
+}
+
+std::vector<int> forward_reach(const LdltFactor& f) {
+  const std::vector<int> parent = elimination_parents(f);
+  const std::size_t n = parent.size();
+  // Parents come after their children: the depths fill from the roots down.
+  std::vector<int> depth(n, 1);
+  for (std::size_t j = n; j-- > 0;)
+    if (parent[j] >= 0) depth[j] += depth[std::size_t(parent[j])];
+  std::vector<int> reach(n);
+  for (std::size_t r = 0; r < n; ++r)
+    reach[r] = depth[std::size_t(f.permutationP().size() > 0 ? f.permutationP().indices()[Eigen::Index(r)] : int(r))];
+  return reach;
+}
+
+// forward_columns' loop for one unit column: a column whose entry is zero
+// is skipped, the others subtract in ascending order; every row it can
+// write lies on the path to the root (L's column j holds ancestors of j).
+void forward_unit(const LdltFactor& f, const std::vector<int>& parent, Eigen::Index r, std::vector<int>& rows,
+                  std::vector<double>& values, std::vector<double>& dense) {
+  const Eigen::SparseMatrix<double>& L = f.matrixL().nestedExpression();
   const int* outer = L.outerIndexPtr();
   const int* inner = L.innerIndexPtr();
-  // A column's parent is its first row below the diagonal; parents come
-  // after their children, so the depths fill from the root down.
-  std::vector<int> depth(std::size_t(n), 1);
-  for (Eigen::Index j = n - 1; j >= 0; --j)
-    if (const int k = below(L, j); k < outer[j + 1]) depth[std::size_t(j)] += depth[std::size_t(inner[k])];
-  std::vector<int> reach(static_cast<std::size_t>(n));
-  for (Eigen::Index r = 0; r < n; ++r) {
-    const Eigen::Index p = f.permutationP().size() > 0 ? f.permutationP().indices()[r] : r;
-    reach[std::size_t(r)] = depth[std::size_t(p)];
+  const double* value = L.valuePtr();
+  rows.clear(), values.clear();
+  int i = f.permutationP().size() > 0 ? f.permutationP().indices()[r] : int(r);
+  dense[std::size_t(i)] = 1;
+  for (; i >= 0; i = parent[std::size_t(i)]) {
+    const double yi = dense[std::size_t(i)];
+    dense[std::size_t(i)] = 0;
+    if (yi == 0.0) continue;
+    rows.push_back(i), values.push_back(yi);
+    for (int k = below(L, i), end = outer[i + 1]; k < end; ++k) dense[std::size_t(inner[k])] -= yi * value[k];
   }
-  return reach;
 }
 
 void backward_columns(const LdltFactor& f, const Eigen::VectorXd& inverse_d, RowsOfColumns& Y,

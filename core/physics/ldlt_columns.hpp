@@ -34,4 +34,12 @@ Eigen::VectorXd inverse_diagonal(const LdltFactor& f);  // D^-1, as Eigen's solv
 // forward solve of its unit column writes.
 std::vector<int> forward_reach(const LdltFactor& f);
 
+// The elimination tree of f's L: each column's parent, or -1 at a root.
+std::vector<int> elimination_parents(const LdltFactor& f);
+// L^-1 P e_r, walking only r's ancestors (`parent`: elimination_parents),
+// the same numbers as forward_columns gives it: its nonzero rows ascending
+// into `rows`, their values into `values`. `dense`: n zeros, left zero.
+void forward_unit(const LdltFactor& f, const std::vector<int>& parent, Eigen::Index r, std::vector<int>& rows,
+                  std::vector<double>& values, std::vector<double>& dense);
+
 }  // namespace tendril

@@ -12,6 +12,7 @@ void LowRankSolve::clear(const LdltFactor& f) {
   S_.resize(0, 0);
   C_.resize(0, 0);
   inverse_d_ = inverse_diagonal(f);
+  parent_ = elimination_parents(f);
 }
 
 bool LowRankSolve::set(const LdltFactor& f, const Eigen::VectorXd& grown, const std::vector<int>& rows,
@@ -23,30 +24,20 @@ bool LowRankSolve::set(const LdltFactor& f, const Eigen::VectorXd& grown, const 
   inverse_d_.conservativeResize(n);
   inverse_d_.tail(grown.size()) = grown.cwiseInverse();
   // The new rows' columns of G: a factored row's unit column forward-solved
-  // (all of them in one pass), a grown row's its own unit column. Those of
-  // the rows seen before stay: the factor did not change, and grown rows
-  // are apart from it.
-  std::vector<Eigen::Index> factored;
-  for (Eigen::Index c = had; c < k; ++c)
-    if (rows[std::size_t(c)] < n0) factored.push_back(c);
-  Eigen::MatrixXd units = Eigen::MatrixXd::Zero(n0, Eigen::Index(factored.size()));
-  for (std::size_t u = 0; u < factored.size(); ++u) units(rows[std::size_t(factored[u])], Eigen::Index(u)) = 1;
-  RowsOfColumns forward;
-  forward_columns(f, units, forward);
+  // along its path in the elimination tree (the rows it can reach), a grown
+  // row's its own unit column. Those of the rows seen before stay: the
+  // factor did not change, and grown rows are apart from it.
   G_.resize(std::size_t(k));
-  for (std::size_t u = 0; u < factored.size(); ++u) {
-    Column& g = G_[std::size_t(factored[u])];
-    g = {};
-    for (Eigen::Index i = 0; i < n0; ++i)
-      if (const double v = forward(i, Eigen::Index(u)); v != 0) g.row.push_back(int(i)), g.value.push_back(v);
+  dense_.resize(std::size_t(n), 0.0);  // zero between uses
+  for (Eigen::Index c = had; c < k; ++c) {
+    Column& g = G_[std::size_t(c)];
+    if (const int r = rows[std::size_t(c)]; r < n0) forward_unit(f, parent_, r, g.row, g.value, dense_);
+    else g = {{r}, {1.0}};
   }
-  for (Eigen::Index c = had; c < k; ++c)
-    if (rows[std::size_t(c)] >= n0) G_[std::size_t(c)] = {{rows[std::size_t(c)]}, {1.0}};
   // S = G^T D^-1 G: the block of the old rows stays, the new rows' entries
   // from each new column scattered and dotted with every column.
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(k, k);
   S.topLeftCorner(had, had) = S_.topLeftCorner(had, had);
-  dense_.assign(std::size_t(n), 0.0);
   for (Eigen::Index j = had; j < k; ++j) {
     const Column& gj = G_[std::size_t(j)];
     for (std::size_t e = 0; e < gj.row.size(); ++e)

@@ -10,8 +10,8 @@
 //   w = C (I + S C)^-1 y_T,  y_T = G^T D^-1 f,  S = G^T D^-1 G
 // (Sherman-Morrison-Woodbury without C^-1, so a singular C - one bar's
 // w (e_i - e_j)(e_i - e_j)^T - is fine). A column of G is the forward solve
-// of a unit column: sparse (the row's ancestors in the elimination tree),
-// found once per new row, and S needs no backward solve. The correction
+// of a unit column: sparse (the row's ancestors in the elimination tree,
+// walked alone), found once per new row, and S needs no backward solve. The correction
 // goes between the forward and the backward half of the solve it corrects,
 // so a step makes one pass over the factor, changes or not. Exact up to
 // rounding: the solution of a fresh factorisation of B + D. Preferred,
@@ -51,6 +51,7 @@ class LowRankSolve {
   std::vector<Column> G_;
   Eigen::MatrixXd S_, C_;
   Eigen::VectorXd inverse_d_;  // D^-1 of every row, the factor's (from clear) and the grown ones
+  std::vector<int> parent_;    // the factor's elimination tree (from clear)
   Eigen::PartialPivLU<Eigen::MatrixXd> K_;  // I + S C
   mutable Eigen::VectorXd yT_, kw_, w_;  // y_T, (I + S C)^-1 y_T, w
   mutable std::vector<double> dense_;  // a column of G scattered, for S

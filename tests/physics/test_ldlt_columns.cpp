@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -76,7 +77,7 @@ TEST_CASE("solve_columns gives each column of Eigen's solve, bit for bit") {
   }
 }
 
-TEST_CASE("forward_reach bounds each unit column's forward solve, and is reached") {
+TEST_CASE("forward_reach bounds each unit column's forward solve, and forward_unit walks it to the same numbers") {
   // The structure's count: no unit column writes more rows, and the longest
   // chains of the elimination tree are written whole (no cancellation here).
   std::mt19937 random(11);
@@ -85,6 +86,9 @@ TEST_CASE("forward_reach bounds each unit column's forward solve, and is reached
   REQUIRE(f.info() == Eigen::Success);
   const std::vector<int> reach = forward_reach(f);
   REQUIRE(reach.size() == std::size_t(A.rows()));
+  const std::vector<int> parent = elimination_parents(f);
+  std::vector<int> rows;
+  std::vector<double> values, dense(std::size_t(A.rows()), 0.0);
   int equal = 0, longest = 0;
   for (Eigen::Index r = 0; r < A.rows(); ++r) {
     Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(A.rows(), 1);
@@ -92,6 +96,11 @@ TEST_CASE("forward_reach bounds each unit column's forward solve, and is reached
     RowsOfColumns y;
     forward_columns(f, unit, y);
     const int written = int((y.array() != 0.0).count());
+    // forward_unit walks the path alone to the same numbers, bit for bit.
+    forward_unit(f, parent, r, rows, values, dense);
+    REQUIRE(rows.size() == std::size_t(written));
+    for (std::size_t e = 0; e < rows.size(); ++e) CHECK(values[e] == y(rows[e], 0));
+    CHECK(std::all_of(dense.begin(), dense.end(), [](double v) { return v == 0.0; }));
     CHECK(written <= reach[std::size_t(r)]);
     equal += written == reach[std::size_t(r)];
     longest = std::max(longest, reach[std::size_t(r)]);
