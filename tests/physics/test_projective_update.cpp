@@ -80,21 +80,39 @@ double largest_difference(const Run& a, const Run& b) {
   return d / size;
 }
 
+// Particles leave and come back: a passive one, one locked in every axis,
+// both integrated again two changes later.
+void leave(Net& n, int k) {
+  const ParticleId a = n.at(Net::r(0), Net::c(0)), b = n.at(Net::r(2), Net::c(2));
+  if (k == 0) n.m.set_passive(a, true);
+  if (k == 1) n.m.set_lock(b, kLockTranslation);
+  if (k == 2) n.m.set_passive(a, false);
+  if (k == 3) n.m.set_lock(b, 0);
+}
+
+// `changes` changes by `rule`, `every` steps apart, followed by the old
+// factor and, the other way, each update factored afresh: one
+// factorisation and an update per change both ways, the same positions,
+// and the changes moved the net by more than `moved` (the comparison is
+// not between two idle runs). The run with the correction.
+Run followed_as_afresh(const char* what, int changes, int every, void (*rule)(Net&, int), double moved) {
+  const Run cheap = run(true, changes, every, rule), fresh = run(false, changes, every, rule);
+  CHECK(cheap.factorizations == 1);
+  CHECK(cheap.updates == std::uint64_t(changes));
+  CHECK(fresh.updates == std::uint64_t(changes));
+  const double d = largest_difference(cheap, fresh);
+  MESSAGE(what << ": largest position difference " << d << " of the net's size");
+  CHECK(d < 1e-9);
+  CHECK(largest_difference(cheap, run(true, 0, (changes + 1) * every)) > moved);
+  return cheap;
+}
+
 }  // namespace
 
 TEST_CASE("projective: a change every 4 steps is followed by the old factor, as a fresh factorisation would") {
   // 8 changes touch 16 rows, which are always followed (projective.cpp,
   // outgrown): every one without a factorisation.
-  const Run cheap = run(true, 8, 4), fresh = run(false, 8, 4);
-  CHECK(cheap.factorizations == 1);
-  CHECK(cheap.updates == 8);
-  CHECK(fresh.updates == 8);
-  const double d = largest_difference(cheap, fresh);
-  MESSAGE("8 changes: largest position difference " << d << " of the net's size");
-  CHECK(d < 1e-9);
-  // The changes moved the net: the comparison is not between two idle runs.
-  const Run none = run(true, 0, 36);
-  CHECK(largest_difference(cheap, none) > 1e-4);
+  followed_as_afresh("8 changes", 8, 4, change, 1e-4);
 }
 
 TEST_CASE("projective: the ninth change outgrows the budget and refactors, in both ways alike") {
@@ -128,37 +146,12 @@ TEST_CASE("projective: a low-rank run is the same, bit for bit, run twice and wi
 
 TEST_CASE("projective: new particles on cables join the correction, as a fresh factorisation would") {
   // Each adds a row and changes one (x, y and z share the rows): 5 x 2 rows.
-  const Run cheap = run(true, 5, 4, hang), fresh = run(false, 5, 4, hang);
+  const Run cheap = followed_as_afresh("5 new particles", 5, 4, hang, 1e-4);  // the loads moved the net
   CHECK(cheap.x.size() == 144 + 5);
-  CHECK(fresh.x.size() == 144 + 5);
-  CHECK(cheap.factorizations == 1);
-  CHECK(cheap.updates == 5);
-  CHECK(fresh.updates == 5);
-  const double d = largest_difference(cheap, fresh);
-  MESSAGE("5 new particles: largest position difference " << d << " of the net's size");
-  CHECK(d < 1e-9);
-  CHECK(largest_difference(cheap, run(true, 0, 24)) > 1e-4);  // the loads moved the net
-}
-
-// Particles leave and come back: a passive one, one locked in every axis,
-// both integrated again two changes later.
-void leave(Net& n, int k) {
-  const ParticleId a = n.at(Net::r(0), Net::c(0)), b = n.at(Net::r(2), Net::c(2));
-  if (k == 0) n.m.set_passive(a, true);
-  if (k == 1) n.m.set_lock(b, kLockTranslation);
-  if (k == 2) n.m.set_passive(a, false);
-  if (k == 3) n.m.set_lock(b, 0);
 }
 
 TEST_CASE("projective: particles made passive, locked and freed again are followed, as a fresh factorisation would") {
-  const Run cheap = run(true, 4, 4, leave), fresh = run(false, 4, 4, leave);
-  CHECK(cheap.factorizations == 1);
-  CHECK(cheap.updates == 4);
-  CHECK(fresh.updates == 4);
-  const double d = largest_difference(cheap, fresh);
-  MESSAGE("passive and locked particles: largest position difference " << d << " of the net's size");
-  CHECK(d < 1e-9);
-  CHECK(largest_difference(cheap, run(true, 0, 20)) > 1e-6);  // the particles held still moved the net
+  followed_as_afresh("passive and locked particles", 4, 4, leave, 1e-6);  // the particles held still moved the net
 }
 
 TEST_CASE("projective: a row left stays decoupled: the followed system solves as one factored without it") {
