@@ -289,6 +289,7 @@ bool ProjectiveSystem::update(const Key& key, std::uint64_t revision, const Mode
   revision_ = revision;
   factored_ = true;
   ++updates_;
+  factorizations_ += !low_rank;  // every update factored afresh: counted as what it is
   return true;
 }
 

@@ -85,7 +85,7 @@ class ProjectiveSystem {
   // mass() hold its place and mass.
   bool known(ParticleId p) const { return p < known_.size() && known_[p]; }
   int rows(int axis) const { return axis_[axis]->rows.count; }  // left ones included
-  std::uint64_t factorizations() const { return factorizations_; }
+  std::uint64_t factorizations() const { return factorizations_; }  // factor(), and updates with low_rank off
   std::uint64_t updates() const { return updates_; }
   // Off: update() factors the updated matrix afresh instead of correcting
   // the old factor (the same matrix: what the tests check the correction
