@@ -61,7 +61,7 @@ bool CstPlan::patch(const Model& m) {
   touched_.erase(std::lower_bound(touched_.begin(), touched_.end(), std::uint32_t(std::max(had, now))),
                  touched_.end());  // dormant both before and now
   slot_of_.resize(m.particles.capacity(), kNoSlot);
-  first_new_slot_ = std::uint32_t(corner.size());
+  const std::size_t slots = corner.size();
   old_ends_.assign(3 * touched_.size(), kNone);
   for (std::size_t t = 0; t < touched_.size(); ++t) {
     const std::uint32_t e = touched_[t];
@@ -83,7 +83,7 @@ bool CstPlan::patch(const Model& m) {
     moved |= old_ends_[3 * t] != i[e] || old_ends_[3 * t + 1] != j[e] || old_ends_[3 * t + 2] != k[e];
   }
   if (unused_ > 64 && 2 * unused_ > corner.size()) return false;
-  moved |= corner.size() != first_new_slot_;
+  moved |= corner.size() != slots;
   patched_from_ = values_;
   values_ = new_stamp();
   if (moved) generation_ = values_;
@@ -111,7 +111,6 @@ void CstPlan::derive(const Model& m) {
   patched_from_ = ~std::uint64_t(0);
   touched_.clear();
   old_ends_.clear();
-  first_new_slot_ = std::uint32_t(corner.size());
 }
 
 }  // namespace tendril

@@ -40,12 +40,11 @@ struct CstPlan {
   // (ascending; past the plan's end: triangles gone to sleep or removed)
   // and patched_ends() their corners before it (3 each, kNone for an entry
   // that is new), when it moved from patched_from(), else patched_from()
-  // matches no stamp. Slots from first_new_slot() on are new in it.
+  // matches no stamp.
   std::uint64_t values() const { return values_; }
   std::uint64_t patched_from() const { return patched_from_; }
   const std::vector<std::uint32_t>& patched() const { return touched_; }
   const std::vector<ParticleId>& patched_ends() const { return old_ends_; }
-  std::uint32_t first_new_slot() const { return first_new_slot_; }
 
   // Per awake triangle, in the model's order.
   std::vector<ParticleId> i, j, k;
@@ -68,7 +67,6 @@ struct CstPlan {
   std::uint64_t generation_ = 0, values_ = 0, patched_from_ = ~std::uint64_t(0);
   std::vector<std::uint32_t> touched_;
   std::vector<ParticleId> old_ends_;
-  std::uint32_t first_new_slot_ = 0;
   std::vector<std::uint32_t> slot_of_;  // per particle: its slot, or kNoSlot
   std::vector<std::uint32_t> users_;    // per slot: the corners of projected triangles on it
   std::size_t unused_ = 0;              // slots without users
